@@ -1,0 +1,107 @@
+#pragma once
+/// @file table_reader.hpp
+/// Typed, validated access to one TOML table of a scenario, with errors that name the file,
+/// line, column and full key path, and rejection of keys that were never read.
+///
+/// Every accessor throws InputError with a one-line message of the form
+///   FILE:LINE:COL: KEY.PATH: what is wrong (what was expected)
+/// where LINE:COL is the position of the offending value (or of the table for a missing key).
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "attiguard/scenario/document.hpp"
+
+namespace attiguard::scenario {
+
+/// Bounds for a number. NaN and ±inf are always rejected.
+struct NumberRule {
+  std::optional<double> min;  ///< lower bound
+  std::optional<double> max;  ///< upper bound
+  bool min_exclusive{false};
+  bool max_exclusive{false};
+  /// > 0
+  static NumberRule positive() { return {0.0, std::nullopt, true, false}; }
+  /// ≥ 0
+  static NumberRule non_negative() { return {0.0, std::nullopt, false, false}; }
+  /// [lo, hi]
+  static NumberRule range(double lo, double hi) { return {lo, hi, false, false}; }
+};
+
+/// Reader over one table; sub-tables share the file and the set of keys seen.
+class TableReader {
+ public:
+  /// Reader over the whole document (top-level table, key path "").
+  explicit TableReader(const Document& doc);
+
+  /// True when `key` is present.
+  [[nodiscard]] bool has(std::string_view key) const;
+
+  /// A required number (integers are accepted as numbers).
+  [[nodiscard]] double number(std::string_view key, const NumberRule& rule = {}) const;
+  /// An optional number, `fallback` when absent.
+  [[nodiscard]] double number_or(std::string_view key, double fallback,
+                                 const NumberRule& rule = {}) const;
+  /// A required integer with bounds.
+  [[nodiscard]] long integer(std::string_view key, long min, long max) const;
+  [[nodiscard]] long integer_or(std::string_view key, long fallback, long min, long max) const;
+  [[nodiscard]] bool boolean_or(std::string_view key, bool fallback) const;
+  /// A required string; when `allowed` is not empty it must be one of them.
+  [[nodiscard]] std::string string(std::string_view key,
+                                   std::span<const std::string_view> allowed = {}) const;
+  [[nodiscard]] std::string string_or(std::string_view key, std::string_view fallback,
+                                      std::span<const std::string_view> allowed = {}) const;
+
+  /// An array of exactly 3 finite numbers.
+  [[nodiscard]] Eigen::Vector3d vector3(std::string_view key) const;
+  /// A non-zero 3-vector, returned normalised.
+  [[nodiscard]] Eigen::Vector3d direction(std::string_view key) const;
+  /// A non-empty array of finite numbers, each satisfying `rule`.
+  [[nodiscard]] Eigen::VectorXd vector(std::string_view key, const NumberRule& rule = {}) const;
+  /// A 3×3 matrix given as an array of 3 rows of 3 finite numbers.
+  [[nodiscard]] Eigen::Matrix3d matrix3(std::string_view key) const;
+
+  /// A rotation (body → inertial) given as an inline table with exactly one of:
+  ///   { matrix = [[…],[…],[…]] }            orthonormal to 1e-9, det = +1
+  ///   { quaternion = [η, x, y, z] }         scalar-first, unit to 1e-9
+  ///   { axis = [x, y, z], angle = θ }       or angle_deg; axis non-zero (normalised)
+  ///   { rotation_vector = [x, y, z] }       θ k in rad
+  [[nodiscard]] Eigen::Matrix3d rotation(std::string_view key) const;
+
+  /// An inertia matrix: 3 principal moments [J1, J2, J3] or a 3×3 matrix; must pass
+  /// dynamics::inertia_error (symmetric positive definite, triangle inequality).
+  [[nodiscard]] Eigen::Matrix3d inertia(std::string_view key) const;
+
+  /// A required sub-table.
+  [[nodiscard]] TableReader table(std::string_view key) const;
+  /// An optional sub-table.
+  [[nodiscard]] std::optional<TableReader> optional_table(std::string_view key) const;
+  /// A required non-empty array of tables ([[key]] or key = [{…}, …]).
+  [[nodiscard]] std::vector<TableReader> array_of_tables(std::string_view key) const;
+
+  /// Full dotted key path of `key` in this table (e.g. "control.kp", "cones[1].axis_b").
+  [[nodiscard]] std::string key_path(std::string_view key) const;
+  /// Throws InputError located at `key` (or at this table when the key is absent).
+  [[noreturn]] void fail(std::string_view key, std::string_view message) const;
+  /// Throws InputError located at this table.
+  [[noreturn]] void fail_here(std::string_view message) const;
+
+  /// Throws InputError naming the first key of this table (and of every sub-table obtained from
+  /// it, recursively) that no accessor read: "unknown key (expected one of: …)".
+  void finish() const;
+
+ private:
+  struct Shared;
+  TableReader(std::shared_ptr<Shared> shared, const toml::table* table, std::string path);
+  std::shared_ptr<Shared> shared_;
+  const toml::table* table_;
+  std::string path_;
+};
+
+}  // namespace attiguard::scenario

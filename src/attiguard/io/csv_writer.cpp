@@ -1,0 +1,63 @@
+#include "attiguard/io/csv_writer.hpp"
+
+#include <array>
+#include <charconv>
+#include <cstring>
+#include <stdexcept>
+
+#include "attiguard/core/errors.hpp"
+
+namespace attiguard::io {
+
+namespace {
+void append_double(std::string& line, double value) {
+  std::array<char, 32> buf{};
+  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), value);
+  line.append(buf.data(), res.ptr);
+}
+}  // namespace
+
+std::string format_double(double value) {
+  std::string s;
+  append_double(s, value);
+  return s;
+}
+
+CsvWriter::CsvWriter(const std::filesystem::path& path, std::vector<std::string> columns)
+    : path_(path), columns_(std::move(columns)), out_(path, std::ios::binary | std::ios::trunc) {
+  if (!out_) {
+    throw InputError("cannot write " + path.string() + ": " + std::strerror(errno));
+  }
+  line_.reserve(32 * columns_.size());
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    out_ << (i ? "," : "") << columns_[i];
+  }
+  out_ << '\n';
+}
+
+void CsvWriter::row(std::span<const double> values) {
+  if (values.size() != columns_.size()) {
+    throw std::logic_error("CsvWriter::row: " + std::to_string(values.size()) + " values for " +
+                           std::to_string(columns_.size()) + " columns in " + path_.string());
+  }
+  line_.clear();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) {
+      line_.push_back(',');
+    }
+    append_double(line_, values[i]);
+  }
+  line_.push_back('\n');
+  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  ++rows_;
+}
+
+void CsvWriter::close() {
+  out_.flush();
+  if (!out_) {
+    throw InputError("cannot write " + path_.string() + ": write failed (disk full?)");
+  }
+  out_.close();
+}
+
+}  // namespace attiguard::io

@@ -1,0 +1,42 @@
+#pragma once
+/// @file csv_writer.hpp
+/// Streaming CSV writer for time series: a header row, then rows of numbers written in the
+/// shortest form that reads back to the same double (std::to_chars), so outputs are exact and
+/// byte-reproducible.
+
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace attiguard::io {
+
+/// Writes `path` with the given column names (docs/conventions.md, "Outputs").
+class CsvWriter {
+ public:
+  /// Creates or truncates the file; throws InputError "cannot write FILE: reason" on failure.
+  CsvWriter(const std::filesystem::path& path, std::vector<std::string> columns);
+
+  /// Appends one row; values.size() must equal the number of columns (else std::logic_error).
+  void row(std::span<const double> values);
+
+  /// Number of data rows written so far.
+  [[nodiscard]] long rows() const noexcept { return rows_; }
+  [[nodiscard]] const std::vector<std::string>& columns() const noexcept { return columns_; }
+
+  /// Flushes and closes; throws InputError if the data could not be written.
+  void close();
+
+ private:
+  std::filesystem::path path_;
+  std::vector<std::string> columns_;
+  std::ofstream out_;
+  std::string line_;
+  long rows_{0};
+};
+
+/// Formats one double as std::to_chars does (shortest round-trip form).
+[[nodiscard]] std::string format_double(double value);
+
+}  // namespace attiguard::io

@@ -7,6 +7,7 @@
 /// called from flight-loop code.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 namespace attiguard::lie {
 

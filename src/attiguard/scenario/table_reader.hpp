@@ -40,7 +40,10 @@ class TableReader {
   /// Reader over the whole document (top-level table, key path "").
   explicit TableReader(const Document& doc);
 
-  /// True when `key` is present.
+  /// True when `key` is present. Asking declares the key as part of this table's schema: it is
+  /// listed among the expected keys of "unknown key" messages and finish() accepts it. Declaring
+  /// every key of a table before reading any also lets a typo of a required key be reported as
+  /// "unknown key 'kpp' … did you mean 'kp'?" rather than as the required key missing.
   [[nodiscard]] bool has(std::string_view key) const;
 
   /// A required number (integers are accepted as numbers).
@@ -99,6 +102,13 @@ class TableReader {
  private:
   struct Shared;
   TableReader(std::shared_ptr<Shared> shared, const toml::table* table, std::string path);
+  /// Declares `key` as read (see has()) and returns its node, or nullptr when absent.
+  const toml::node* take(std::string_view key) const;
+  /// Throws the error for an absent required key: "missing required key (expected …)" located at
+  /// this table, or "unknown key" at an undeclared key of this table that looks like a typo of it.
+  [[noreturn]] void missing(std::string_view key, std::string_view expected) const;
+  /// A sub-table reader over `table` at key path `path`, registered for finish().
+  TableReader child(const toml::table* table, std::string path) const;
   std::shared_ptr<Shared> shared_;
   const toml::table* table_;
   std::string path_;

@@ -1,0 +1,115 @@
+// TableReader::rotation: a rotation given as an inline table in one of four forms
+// (docs/scenario-format.md, "Rotations").
+
+#include <Eigen/LU>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/lie/so3.hpp"
+#include "attiguard/scenario/messages.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+namespace {
+
+/// Tolerance on ‖RᵀR − I‖_F of a matrix and on |‖q‖ − 1| of a quaternion.
+constexpr double kRotationTolerance = 1e-9;
+
+constexpr std::string_view kForms =
+    "exactly one of: matrix = [[...], [...], [...]], quaternion = [w, x, y, z], "
+    "axis = [x, y, z] with angle (rad) or angle_deg, rotation_vector = [x, y, z] (rad)";
+
+}  // namespace
+
+Eigen::Matrix3d TableReader::rotation(std::string_view key) const {
+  const toml::node* n = take(key);
+  if (n == nullptr) {
+    missing(key, "a rotation table with " + std::string(kForms));
+  }
+  const toml::table* t = n->as_table();
+  if (t == nullptr) {
+    fail(key, "expected a rotation table { ... } with " + std::string(kForms) + "; got " +
+                  detail::describe(*n));
+  }
+  // Not registered for finish(): the forms are every key a rotation table may hold, and the
+  // unknown keys are rejected right here, before the forms are counted.
+  const TableReader rot(shared_, t, key_path(key));
+  const bool has_matrix = rot.has("matrix");
+  const bool has_quaternion = rot.has("quaternion");
+  const bool has_axis = rot.has("axis");
+  const bool has_angle = rot.has("angle");
+  const bool has_angle_deg = rot.has("angle_deg");
+  const bool has_rotation_vector = rot.has("rotation_vector");
+  rot.finish();
+
+  std::vector<std::string> forms;
+  if (has_matrix) forms.emplace_back("matrix");
+  if (has_quaternion) forms.emplace_back("quaternion");
+  if (has_axis || has_angle || has_angle_deg) forms.emplace_back("axis");
+  if (has_rotation_vector) forms.emplace_back("rotation_vector");
+  if (forms.empty()) {
+    rot.fail_here("no rotation given: expected " + std::string(kForms));
+  }
+  if (forms.size() > 1) {
+    std::string given;
+    for (const std::string& f : forms) {
+      given += (given.empty() ? "" : " and ") + f;
+    }
+    rot.fail_here(std::to_string(forms.size()) + " rotation forms given (" + given +
+                  "): expected " + std::string(kForms));
+  }
+
+  if (has_matrix) {
+    const Eigen::Matrix3d M = rot.matrix3("matrix");
+    const double err = lie::orthonormality_error(M);
+    if (!(err <= kRotationTolerance)) {
+      rot.fail("matrix", "not a rotation matrix: ||R^T R - I||_F = " + detail::format_number(err) +
+                             " exceeds 1e-9 (det = " + detail::format_number(M.determinant()) +
+                             ")");
+    }
+    const double det = M.determinant();
+    if (!(det > 0.0) || !lie::is_rotation(M, kRotationTolerance)) {
+      rot.fail("matrix", "not a rotation matrix: det = " + detail::format_number(det) +
+                             " (a reflection; a rotation has det = +1)");
+    }
+    return M;
+  }
+  if (has_quaternion) {
+    const Eigen::VectorXd q = rot.vector("quaternion");
+    if (q.size() != 4) {
+      rot.fail("quaternion", "expected an array of 4 numbers [w, x, y, z] (scalar first), got " +
+                                 std::to_string(q.size()) +
+                                 (q.size() == 1 ? " element" : " elements"));
+    }
+    const double norm = q.norm();
+    if (!(std::abs(norm - 1.0) <= kRotationTolerance)) {
+      rot.fail("quaternion", "not a unit quaternion: norm = " + detail::format_number(norm) +
+                                 " (must be 1 to within 1e-9)");
+    }
+    return lie::quat_to_rotation(lie::Quat(q(0), q(1), q(2), q(3)));
+  }
+  if (has_rotation_vector) {
+    return lie::exp(rot.vector3("rotation_vector"));
+  }
+  // Axis-angle.
+  if (!has_axis) {
+    rot.fail(has_angle ? "angle" : "angle_deg",
+             "an angle needs an axis: { axis = [x, y, z], angle = θ } (rad) or angle_deg (deg)");
+  }
+  if (has_angle && has_angle_deg) {
+    rot.fail("angle_deg", "give either angle (rad) or angle_deg (deg), not both");
+  }
+  if (!has_angle && !has_angle_deg) {
+    rot.fail_here("axis needs an angle: add angle (rad) or angle_deg (deg)");
+  }
+  const Eigen::Vector3d axis = rot.direction("axis");
+  const double angle =
+      has_angle ? rot.number("angle") : rot.number("angle_deg") * std::numbers::pi / 180.0;
+  return lie::exp(angle * axis);
+}
+
+}  // namespace attiguard::scenario

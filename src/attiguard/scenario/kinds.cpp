@@ -4,9 +4,14 @@
 #include <string>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/reach_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
 #include "attiguard/scenario/table_reader.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/rigid_body_run.hpp"
+#include "attiguard/sim/waypoint_run.hpp"
 
 namespace attiguard::scenario {
 
@@ -18,9 +23,39 @@ nlohmann::json run_rigid_body(const Document& doc, const RunOptions& options) {
   return sim::run_rigid_body(parse_rigid_body(doc), options.out_dir);
 }
 
-constexpr std::array<KindHandler, 1> registry{{
+void check_pet_erg(const Document& doc) { (void)parse_pet_erg(doc); }
+
+nlohmann::json run_pet_erg(const Document& doc, const RunOptions& options) {
+  return sim::run_pet_erg(parse_pet_erg(doc), options.out_dir);
+}
+
+void check_waypoint(const Document& doc) { (void)parse_waypoint(doc); }
+
+nlohmann::json run_waypoint(const Document& doc, const RunOptions& options) {
+  return sim::run_waypoint(parse_waypoint(doc), options.out_dir);
+}
+
+void check_reach(const Document& doc) { (void)parse_reach(doc); }
+
+// Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
+nlohmann::json run_reach(const Document& doc, const RunOptions&) {
+  TableReader(doc).fail("kind", "scenario kind 'reach' is analysed with `attiguard reach " +
+                                    doc.path.string() + " --out DIR`, not `attiguard run`");
+}
+
+constexpr std::array<KindHandler, 4> registry{{
     {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
      &check_rigid_body, &run_rigid_body},
+    {"pet_erg",
+     "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
+     &check_pet_erg, &run_pet_erg},
+    {"waypoint",
+     "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
+     "decelerate/fine state machine)",
+     &check_waypoint, &run_waypoint},
+    {"reach",
+     "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
+     &check_reach, &run_reach},
 }};
 
 }  // namespace

@@ -1,0 +1,48 @@
+"""attiguard_plot: PNG plots of the results of ``attiguard run``.
+
+Usage (the ``attiguard run ... --plot`` option runs exactly this)::
+
+    /usr/bin/python3 -m attiguard_plot KIND DIR
+
+reads DIR/trajectory.csv and DIR/summary.json written by ``attiguard run`` for a scenario of kind
+KIND and writes PNG files into DIR, printing the path of each on stdout, one per line.
+
+Use Debian's interpreter ``/usr/bin/python3``: it is the one that sees ``python3-matplotlib``
+and ``python3-numpy`` (a pyenv ``python3`` on PATH usually does not).
+
+Exit status:
+    0   plots written;
+    2   usage error, unknown scenario kind, or missing/unreadable result files;
+    69  numpy or matplotlib is not installed for this interpreter
+        (EX_UNAVAILABLE; the one line on stderr says which and how to install it);
+    1   unexpected error (Python traceback).
+Every failure prints one line on stderr starting with ``attiguard_plot: ``.
+
+To add plots for a new scenario kind, write a module ``KIND.py`` with a function
+``plot(run: common.Run) -> list[pathlib.Path]`` and add it to :func:`plotters`.
+"""
+
+from __future__ import annotations
+
+EXIT_OK = 0
+EXIT_USAGE = 2
+EXIT_DEPENDENCY_MISSING = 69
+
+
+class PlotInputError(Exception):
+    """The arguments or the result files cannot be plotted (exit status 2)."""
+
+
+def plotters():
+    """The registry: scenario kind -> function(run) -> list of written paths.
+
+    Imported lazily so that ``import attiguard_plot`` works without matplotlib.
+    """
+    from . import rigid_body, pet_erg, reach, waypoint
+
+    return {
+        "rigid_body": rigid_body.plot,
+        "pet_erg": pet_erg.plot,
+        "reach": reach.plot,
+        "waypoint": waypoint.plot,
+    }

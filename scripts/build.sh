@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Configures and builds attiguard (Release) into build/ at the repository root.
+# Extra arguments are passed to the CMake configure step (e.g. -DATTIGUARD_BUILD_BENCH=OFF).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+# Debian's interpreter, never a pyenv shim: it is the one that sees python3-matplotlib/numpy
+# (docs/conventions.md, "Python").
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 "$@"
+cmake --build build --parallel "$(nproc)"

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Installs every system package attiguard needs (Debian 12), non-interactively.
+# Idempotent: when all packages are already installed it does nothing (no apt-get update).
+# Runs apt-get directly as root, through sudo otherwise.
+set -euo pipefail
+
+packages=(
+  build-essential cmake g++
+  libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
+  libsdp-dev liblapack-dev libblas-dev
+  libgtest-dev libbenchmark-dev
+  python3 python3-matplotlib python3-numpy python3-pytest pybind11-dev python3-dev
+)
+
+# True when the package is installed ("install ok installed").
+is_installed() {
+  [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
+}
+
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+  echo "setup.sh: this script needs a Debian-based system (dpkg-query and apt-get not found)." >&2
+  echo "setup.sh: install these packages by other means: ${packages[*]}" >&2
+  exit 1
+fi
+
+missing=()
+for pkg in "${packages[@]}"; do
+  is_installed "$pkg" || missing+=("$pkg")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup.sh: all ${#packages[@]} system packages are already installed."
+  exit 0
+fi
+
+if [[ "$(id -u)" -eq 0 ]]; then
+  as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+  as_root=(sudo --)
+else
+  echo "setup.sh: these packages are missing: ${missing[*]}" >&2
+  echo "setup.sh: installing them needs root, and sudo is not available." >&2
+  echo "setup.sh: run this script as root, or install them with: apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "setup.sh: installing ${missing[*]}"
+apt_get=("${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get -y -q
+         -o DPkg::Lock::Timeout=600)
+"${apt_get[@]}" update
+"${apt_get[@]}" install --no-install-recommends "${missing[@]}"
+
+for pkg in "${missing[@]}"; do
+  if ! is_installed "$pkg"; then
+    echo "setup.sh: $pkg is still not installed after apt-get install" >&2
+    exit 1
+  fi
+done
+echo "setup.sh: done."

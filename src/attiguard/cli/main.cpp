@@ -1,0 +1,132 @@
+/// @file main.cpp
+/// The `attiguard` program: argument parsing (CLI11) and the mapping of failures to exit codes.
+///
+/// Exit codes (docs/conventions.md): 0 success; 2 invalid input, including bad command-line
+/// arguments; 3 numerical failure, and any unexpected internal error; 4 a requested safety
+/// verification failed. Every non-zero exit prints exactly one line on stderr:
+///   attiguard: error: <message>
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/reach_command.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/core/version.hpp"
+#include "attiguard/scenario/kinds.hpp"
+
+namespace {
+
+using attiguard::ExitCode;
+
+/// Prints the one stderr line of a failed run (newlines in the message become "; ") and returns
+/// the exit code.
+int fail(ExitCode code, std::string message) {
+  std::string line;
+  line.reserve(message.size());
+  for (char c : message) {
+    if (c == '\r') continue;
+    if (c == '\n') {
+      line += "; ";
+    } else {
+      line += c;
+    }
+  }
+  while (line.ends_with("; ")) line.resize(line.size() - 2);
+  std::cout.flush();
+  std::cerr << "attiguard: error: " << line << std::endl;
+  return static_cast<int>(code);
+}
+
+/// The footer of `attiguard --help`: every scenario kind with its description.
+std::string kinds_help() {
+  std::size_t width = 0;
+  for (const auto& k : attiguard::scenario::kinds()) width = std::max(width, k.name.size());
+  std::string text = "Scenario kinds (the top-level `kind` key of SCENARIO.toml):\n";
+  for (const auto& k : attiguard::scenario::kinds()) {
+    text += "  " + std::string(k.name) + std::string(width - k.name.size() + 2, ' ') +
+            std::string(k.description) + "\n";
+  }
+  text +=
+      "\nExit codes: 0 success, 2 invalid input, 3 numerical failure, 4 verification failed.\n"
+      "Documentation: docs/conventions.md, docs/scenario-format.md.";
+  return text;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"attiguard: spacecraft attitude guidance and control with safety guarantees",
+               "attiguard"};
+  app.set_version_flag("--version", std::string("attiguard ") + attiguard::version_string);
+  app.footer(kinds_help());
+  // The subcommand requirement is checked after parsing, so that an unknown option is reported
+  // as such rather than as a missing subcommand.
+  app.require_subcommand(0, 1);
+
+  attiguard::cli::RunArguments run_args;
+  CLI::App* run_cmd = app.add_subcommand(
+      "run", "Run a scenario; write trajectory.csv and summary.json (and plots) into DIR");
+  run_cmd->add_option("SCENARIO", run_args.scenario, "Scenario file (TOML)")
+      ->required()
+      ->type_name("FILE");
+  run_cmd->add_option("--out", run_args.out_dir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  run_cmd->add_flag("--plot", run_args.plot,
+                    "Also write PNG plots into DIR (needs python3-matplotlib)");
+
+  std::filesystem::path check_path;
+  CLI::App* check_cmd =
+      app.add_subcommand("check", "Parse and validate a scenario without running it");
+  check_cmd->add_option("SCENARIO", check_path, "Scenario file (TOML)")
+      ->required()
+      ->type_name("FILE");
+
+  attiguard::cli::ReachArguments reach_args;  // ConReach (issue 5): cli/reach_command.cpp
+  CLI::App* reach_cmd = app.add_subcommand(
+      "reach", "ConReach reachability and safety verification; write reach.json into DIR");
+  reach_cmd->add_option("SCENARIO", reach_args.scenario, "Scenario file (TOML, kind = \"reach\")")
+      ->required()
+      ->type_name("FILE");
+  reach_cmd->add_option("--out", reach_args.out_dir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  reach_cmd->add_flag("--plot", reach_args.plot, "Also write PNG plots into DIR");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
+  }
+
+  if (run_cmd->parsed()) {
+    attiguard::cli::run_command(run_args);
+  } else if (check_cmd->parsed()) {
+    attiguard::cli::check_command(check_path);
+  } else if (reach_cmd->parsed()) {
+    attiguard::cli::reach_command(reach_args);
+  } else {
+    return fail(ExitCode::invalid_input,
+                "a subcommand is required: run, check or reach (see attiguard --help)");
+  }
+  return static_cast<int>(ExitCode::ok);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const attiguard::Error& e) {
+    return fail(e.code(), e.what());
+  } catch (const std::exception& e) {
+    return fail(ExitCode::numerical_failure, std::string("internal error: ") + e.what());
+  } catch (...) {
+    return fail(ExitCode::numerical_failure, "internal error: unknown exception");
+  }
+}

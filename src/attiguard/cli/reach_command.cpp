@@ -1,0 +1,54 @@
+/// @file reach_command.cpp
+/// `attiguard reach SCENARIO.toml --out DIR [--plot]` (docs/reach.md).
+
+#include "attiguard/cli/reach_command.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/cli/commands.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/reach/reach_run.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/reach_scenario.hpp"
+
+namespace attiguard::cli {
+
+void reach_command(const ReachArguments& args) {
+  const scenario::Document doc = scenario::load_document(args.scenario);
+  const scenario::ReachScenario sc = scenario::parse_reach(doc);
+  if (args.out_dir.empty()) throw InputError("--out: the output directory must not be empty");
+
+  // Outputs are written even when the verification fails; plots are made before rethrowing.
+  nlohmann::json summary;
+  try {
+    summary = reach::run_reach(sc, args.out_dir);
+  } catch (const VerificationFailure&) {
+    if (args.plot) (void)plot_results("reach", args.out_dir);
+    throw;
+  }
+  const auto& steps = summary["steps"];
+  const auto& last = steps.back();
+  char buf[256];
+  std::cout << "Reach " << sc.name << " (" << sc.model << ", " << summary["rate_mode"].get<std::string>()
+            << ", " << summary["cells"].get<long>() << " cell(s)) in "
+            << summary["wall_time_s"].get<double>() << " s\n";
+  std::snprintf(buf, sizeof buf, "  final ball: r = %.6g, attitude within %.6g rad, c_N = %.4g\n",
+                last["r"].get<double>(), last["attitude_radius"].get<double>(), last["c"].get<double>());
+  std::cout << buf;
+  std::cout << "  sdp_solves: " << summary["sdp_solves"].get<long>() << '\n';
+  std::cout << "  soundness: " << summary["soundness"]["inside"].get<long>() << "/"
+            << summary["soundness"]["samples"].get<long>() << " sampled trajectories inside\n";
+  std::cout << "  verdict: " << summary["verdict"].get<std::string>() << '\n';
+  std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << '\n';
+  if (args.plot) {
+    const PlotOutcome plots = plot_results("reach", args.out_dir);
+    for (const auto& p : plots.written) std::cout << "  " << p.string() << '\n';
+    if (plots.skipped_because) std::cerr << "attiguard: warning: no plots: " << *plots.skipped_because << '\n';
+  }
+}
+
+}  // namespace attiguard::cli

@@ -1,0 +1,20 @@
+#pragma once
+/// @file reach_command.hpp
+/// `attiguard reach SCENARIO.toml --out DIR [--plot]`: ConReach reachability analysis.
+
+#include <filesystem>
+
+namespace attiguard::cli {
+
+/// Arguments of `attiguard reach`.
+struct ReachArguments {
+  std::filesystem::path scenario;  ///< SCENARIO.toml (kind = "reach")
+  std::filesystem::path out_dir;   ///< --out DIR
+  bool plot{false};                ///< --plot
+};
+
+/// Runs the analysis, writes DIR/reach.json and the CSV files (and plots with --plot), prints
+/// a short summary. Throws attiguard::Error (exit code from its code()).
+void reach_command(const ReachArguments& args);
+
+}  // namespace attiguard::cli

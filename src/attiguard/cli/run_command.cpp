@@ -1,0 +1,128 @@
+/// @file run_command.cpp
+/// `attiguard run SCENARIO.toml --out DIR [--plot]`.
+
+#include <array>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/cli/commands.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/kinds.hpp"
+
+namespace attiguard::cli {
+namespace {
+
+/// The figures of summary.json shown after a run, in this order, when present. Scenario kinds
+/// whose summary has none of them get their first kMaxFigures scalar fields instead; everything
+/// is in summary.json anyway.
+constexpr std::array<std::string_view, 9> kHeadlineKeys{
+    "law",                      // rigid_body
+    "integrator",
+    "duration",
+    "steps",
+    "final_attitude_error_rad",
+    "final_omega_norm",
+    "max_torque_norm",
+    "max_energy_drift_rel",
+    "max_momentum_drift_rel",
+};
+
+/// How many scalar figures are shown at most when none of kHeadlineKeys is present.
+constexpr std::size_t kMaxFigures = 10;
+
+/// A scalar JSON value for humans: numbers with 6 significant digits, strings unquoted.
+std::string format_scalar(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
+    return buf;
+  }
+  return v.dump();
+}
+
+/// Creates the output directory (InputError when impossible: it is an argument problem).
+void make_output_dir(const std::filesystem::path& dir) {
+  if (dir.empty()) throw InputError("--out: the output directory must not be empty");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir.string() + ": cannot create output directory (" +
+                     (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  }
+}
+
+/// Prints the summary returned by the scenario kind: its name and wall time, then its top-level
+/// scalar figures (nested objects and arrays stay in summary.json).
+void print_summary(const nlohmann::json& summary, const std::string& scenario,
+                   std::string_view kind) {
+  std::string name = scenario;
+  if (summary.contains("name") && summary["name"].is_string()) {
+    name = summary["name"].get<std::string>();
+  }
+  std::cout << "Ran " << name << " (" << kind << ")";
+  if (summary.contains("wall_time_s") && summary["wall_time_s"].is_number()) {
+    std::cout << " in " << format_scalar(summary["wall_time_s"]) << " s";
+  }
+  std::cout << '\n';
+
+  auto shown_scalar = [](const nlohmann::json& v) { return v.is_primitive() && !v.is_null(); };
+  std::size_t shown = 0;
+  if (summary.is_object()) {
+    for (std::string_view key : kHeadlineKeys) {
+      const auto it = summary.find(std::string(key));
+      if (it == summary.end() || !shown_scalar(*it)) continue;
+      std::cout << "  " << key << ": " << format_scalar(*it) << '\n';
+      ++shown;
+    }
+    if (shown == 0) {
+      for (const auto& [key, value] : summary.items()) {
+        if (key == "name" || key == "kind" || key == "wall_time_s") continue;
+        if (!shown_scalar(value) || shown == kMaxFigures) continue;
+        std::cout << "  " << key << ": " << format_scalar(value) << '\n';
+        ++shown;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void run_command(const RunArguments& args) {
+  const scenario::Document doc = scenario::load_document(args.scenario);
+  const scenario::KindHandler& handler = scenario::handler_for(doc);
+  make_output_dir(args.out_dir);
+
+  scenario::RunOptions options;
+  options.out_dir = args.out_dir;
+  const nlohmann::json summary = handler.run(doc, options);
+  print_summary(summary, args.scenario.string(), handler.name);
+
+  std::vector<std::filesystem::path> written;
+  for (const char* file : {"trajectory.csv", "summary.json"}) {
+    const auto path = args.out_dir / file;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) written.push_back(path);
+  }
+
+  std::string no_plots;
+  if (args.plot) {
+    PlotOutcome plots = plot_results(std::string(handler.name), args.out_dir);
+    written.insert(written.end(), plots.written.begin(), plots.written.end());
+    if (plots.skipped_because) no_plots = *plots.skipped_because;
+  }
+
+  std::cout << "Wrote:\n";
+  for (const auto& path : written) std::cout << "  " << path.string() << '\n';
+  std::cout.flush();
+  if (!no_plots.empty()) std::cerr << "attiguard: warning: no plots: " << no_plots << '\n';
+}
+
+}  // namespace attiguard::cli

@@ -1,0 +1,71 @@
+#pragma once
+/// @file spacecraft_plant.hpp
+/// Spacecraft with one main thruster along body x, six on/off reaction-control thrusters and
+/// reaction wheels: translational dynamics (2)-(3) and attitude dynamics (4)-(5) of the waypoint
+/// paper, simulated on SO(3) × R⁹ (attitude as R_ib; quaternions are outputs).
+
+#include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/integrate/product_state.hpp"
+
+namespace attiguard::dynamics {
+
+/// (R_ib; ω_b, p_i, v_i): R[0] body → inertial, x = [ω_b (0..2), p_i (3..5), v_i (6..8)].
+using SpacecraftState = integrate::ProductState<1, 9>;
+
+/// ω^b_{i,b} of (5), p^i and v^i of (2)-(3) (waypoint paper) read from the state.
+[[nodiscard]] inline Vec3 omega_b_of(const SpacecraftState& y) noexcept { return y.x.segment<3>(0); }
+[[nodiscard]] inline Vec3 p_i_of(const SpacecraftState& y) noexcept { return y.x.segment<3>(3); }
+[[nodiscard]] inline Vec3 v_i_of(const SpacecraftState& y) noexcept { return y.x.segment<3>(6); }
+
+/// Actuator commands held over one control period.
+struct SpacecraftInputs {
+  Vec3 tau_b{Vec3::Zero()};    ///< wheel torque command [N·m]
+  double thrust{0.0};          ///< main thrust T along x_b, 0 or T_max [N]
+  Vec3 f_rct_b{Vec3::Zero()};  ///< net RCT body force B T_RCT [N]
+};
+
+/// Mass, inertia and the optional per-axis wheel torque limit.
+class SpacecraftPlant {
+ public:
+  /// m and J of (3), (5) of the waypoint paper. Throws InputError for an invalid inertia
+  /// (RigidBody); mass > 0 is the caller's check.
+  SpacecraftPlant(double mass, const Mat3& J, double max_wheel_torque = 0.0)
+      : body_(J), mass_(mass), max_wheel_torque_(max_wheel_torque) {}
+
+  [[nodiscard]] double mass() const noexcept { return mass_; }
+  [[nodiscard]] const RigidBody& body() const noexcept { return body_; }
+
+  /// The torque τ^b of (5) (waypoint paper) the wheels deliver: the command clamped per axis to ±max_wheel_torque when a
+  /// limit is set (the paper assumes none).
+  [[nodiscard]] Vec3 applied_torque(const Vec3& tau_cmd_b) const noexcept {
+    if (max_wheel_torque_ > 0.0) {
+      return tau_cmd_b.cwiseMax(-max_wheel_torque_).cwiseMin(max_wheel_torque_);
+    }
+    return tau_cmd_b;
+  }
+
+  /// v̇^i = (1/m) R_b^i (f^b_Thruster + f^b_RCT), f^b_Thruster = [T, 0, 0] (waypoint paper, (3)).
+  [[nodiscard]] Vec3 acceleration_i(const Mat3& R_ib, const SpacecraftInputs& u) const noexcept {
+    return R_ib * (Vec3(u.thrust, 0.0, 0.0) + u.f_rct_b) / mass_;
+  }
+
+  /// Body-velocity tangent [ω_b; ω̇_b; ṗ_i; v̇_i] of (2)-(5) of the waypoint paper:
+  /// Ṙ = R S(ω) (equivalent to (4)), J ω̇ = −S(ω) J ω + τ (5), ṗ = v (2), v̇ from (3).
+  [[nodiscard]] SpacecraftState::Tangent derivative(const SpacecraftState& y,
+                                                    const SpacecraftInputs& u) const noexcept {
+    SpacecraftState::Tangent d;
+    const Vec3 omega_b = omega_b_of(y);
+    d.segment<3>(0) = omega_b;
+    d.segment<3>(3) = body_.angular_acceleration(omega_b, applied_torque(u.tau_b));
+    d.segment<3>(6) = v_i_of(y);
+    d.segment<3>(9) = acceleration_i(y.R[0], u);
+    return d;
+  }
+
+ private:
+  RigidBody body_;
+  double mass_;
+  double max_wheel_torque_;
+};
+
+}  // namespace attiguard::dynamics

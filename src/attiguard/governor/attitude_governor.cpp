@@ -1,0 +1,167 @@
+#include "attiguard/governor/attitude_governor.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "attiguard/governor/navigation_field.hpp"
+#include "attiguard/governor/pointing_threshold.hpp"
+
+namespace attiguard::governor {
+
+namespace {
+
+bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
+
+void require(bool ok, const std::string& what) {
+  if (!ok) {
+    throw std::invalid_argument("governor: " + what);
+  }
+}
+
+}  // namespace
+
+double GovernorOutput::min_margin() const noexcept {
+  double m = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < cone_count; ++i) {
+    m = std::min(m, margins[static_cast<std::size_t>(i)]);
+  }
+  return m;
+}
+
+AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
+                                   std::span<const ConeConstraint> cones)
+    : params_(params) {
+  require(positive_finite(params.gains.kp) && positive_finite(params.gains.kd),
+          "kp and kd must be positive and finite");
+  require(positive_finite(params.tau_max), "tau_max must be positive and finite");
+  require(positive_finite(params.kappa), "kappa must be positive and finite");
+  require(std::isfinite(params.c_gamma) && params.c_gamma > 1.0, "c_gamma must exceed 1");
+  require(positive_finite(params.Ts), "the sampling period Ts must be positive and finite");
+  require(positive_finite(params.epsilon), "epsilon must be positive and finite");
+  require(std::isfinite(params.epsilon_gamma) && params.epsilon_gamma > 0.0 &&
+              params.epsilon_gamma < 2.0,
+          "epsilon_gamma must lie in (0, 2)");
+  require(params.J.allFinite() && (params.J - params.J.transpose()).norm() <= 1e-9 * params.J.norm(),
+          "the inertia matrix must be finite and symmetric");
+  const double lambda_min = Eigen::SelfAdjointEigenSolver<Mat3>(params.J, Eigen::EigenvaluesOnly)
+                                .eigenvalues()
+                                .minCoeff();
+  require(lambda_min > 0.0, "the inertia matrix must be positive definite");
+  require(cones.size() <= static_cast<std::size_t>(kMaxCones),
+          "at most " + std::to_string(kMaxCones) + " cone constraints");
+  for (std::size_t i = 0; i < cones.size(); ++i) {
+    if (const auto err = cone_error(cones[i])) {
+      throw std::invalid_argument("governor: cone " + std::to_string(i) + ": " + *err);
+    }
+    (void)cones_.push_back(cones[i]);
+  }
+  const TorqueThresholdInputs in{params.gains.kp, params.gains.kd, lambda_min, params.tau_max};
+  threshold_ = compute_torque_threshold(in);
+  gamma_d_ = threshold_.gamma_d;
+  gamma_d_loose_ = torque_threshold_loose(in);
+  gamma_cap_ = params.gains.kp * (2.0 - params.epsilon_gamma);
+  out_.gamma_d = gamma_d_;
+  out_.cone_count = cones_.size();
+}
+
+double AttitudeGovernor::lyapunov(const Mat3& R_ib, const Vec3& omega_b,
+                                  const Mat3& R_g) const noexcept {
+  return control::pd_lyapunov(params_.J, R_ib, omega_b, R_g, params_.gains);
+}
+
+Vec3 AttitudeGovernor::torque(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept {
+  return control::pd_torque(R_ib, omega_b, R_g, params_.gains);
+}
+
+double AttitudeGovernor::gamma_g(const Mat3& R_g) const noexcept {
+  return pointing_threshold(cones_.span(), R_g, params_.gains.kp);
+}
+
+double AttitudeGovernor::gamma(const Mat3& R_g) const noexcept {
+  return std::min({gamma_d_, gamma_g(R_g), gamma_cap_});
+}
+
+Vec3 AttitudeGovernor::navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept {
+  return governor::navigation_field(cones_.span(), R_g, R_d);
+}
+
+bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
+                                         const Mat3& R_g) const noexcept {
+  return pet_trigger(gamma(R_g), lyapunov(R_ib, omega_b, R_g), params_.c_gamma);
+}
+
+GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                          const Mat3& R_d, bool flag) const noexcept {
+  GovernorOutput out;
+  out.R_g = params_.mode == GovernorMode::none ? R_d : R_g;
+  out.tau_b = torque(R_ib, omega_b, out.R_g);
+  out.V = lyapunov(R_ib, omega_b, out.R_g);
+  out.gamma_d = gamma_d_;
+  out.gamma_g = gamma_g(out.R_g);
+  out.gamma = std::min({gamma_d_, out.gamma_g, gamma_cap_});
+  out.trigger = flag;
+  switch (params_.mode) {
+    case GovernorMode::pet:
+      out.rho = navigation_field(out.R_g, R_d);
+      out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, out.V, out.rho, params_.epsilon);
+      break;
+    case GovernorMode::continuous:
+      out.rho = navigation_field(out.R_g, R_d);
+      out.xi_g = erg_reference_rate(params_.kappa, out.gamma, out.V, out.rho, params_.epsilon);
+      out.trigger = true;
+      break;
+    case GovernorMode::none:
+      out.trigger = false;
+      break;
+  }
+  out.cone_count = cones_.size();
+  for (int i = 0; i < cones_.size(); ++i) {
+    out.margins[static_cast<std::size_t>(i)] = pointing_margin(cones_[i], R_ib);
+  }
+  return out;
+}
+
+void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
+  started_ = true;
+  t_prev_ = t0;
+  R_g_ = R_g0;
+  flag_ = params_.mode == GovernorMode::continuous;
+  clock_ = SamplingClock(t0, params_.Ts);
+  out_ = GovernorOutput{};
+  out_.R_g = R_g0;
+  out_.gamma_d = gamma_d_;
+}
+
+const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const Vec3& omega_b,
+                                             const Mat3& R_d) noexcept {
+  if (!started_) {
+    reset(t, R_ib);
+  }
+  if (params_.mode == GovernorMode::none) {
+    R_g_ = R_d;
+  } else {
+    const double dt = t - t_prev_;
+    if (dt > 0.0 && out_.xi_g.squaredNorm() > 0.0) {
+      const Mat3 candidate = R_g_ * lie::exp(dt * out_.xi_g);
+      // Zero-order hold of the rate between calls; keep V ≤ Γ at the call instants.
+      if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
+        R_g_ = candidate;
+      }
+    }
+  }
+  t_prev_ = std::max(t_prev_, t);
+  bool sampled = false;
+  if (params_.mode == GovernorMode::pet && clock_.poll(t)) {
+    flag_ = trigger_condition(R_ib, omega_b, R_g_);
+    sampled = true;
+  }
+  out_ = evaluate(R_ib, omega_b, R_g_, R_d, flag_);
+  out_.sampled = sampled;
+  return out_;
+}
+
+}  // namespace attiguard::governor

@@ -1,0 +1,97 @@
+#pragma once
+/// @file navigation_field.hpp
+/// The navigation field ρ_n(R_d, R_g) = −grad P(R_g, R_d), P = P_a + Σ P_r (PET-ERG paper,
+/// Sec. III-B.2), as body vectors of T_{R_g}SO(3): a function f has gradient g at R_g when
+/// f(R_g exp(εη̂)) = f(R_g) + ε gᵀη + O(ε²) (paper-notes "Attractive field").
+///
+/// Repulsive potential (our choice, the paper does not state it; docs/pet-erg.md):
+///   P_r(c) = k_r (ζ − c)² / (c − δ) for δ < c < ζ, 0 for c ≥ ζ, c = a_cᵀR_g a_b.
+/// It is C¹ (dP_r/dc = 0 at c = ζ), diverges as c → δ⁺, and its gradient is
+///   grad P_r = (dP_r/dc) g_c,  dP_r/dc = −k_r (ζ − c)(ζ + c − 2δ)/(c − δ)².
+/// All functions are allocation-free and noexcept; for c ≤ δ (outside the field's domain, which
+/// the governor never reaches) they return large finite values instead of ±∞.
+
+#include <algorithm>
+#include <span>
+
+#include "attiguard/governor/cone_constraint.hpp"
+
+namespace attiguard::governor {
+
+/// Smallest distance c − δ used in the repulsive formulas (keeps them finite).
+inline constexpr double kRepulsiveFloor = 1e-12;
+
+/// Attractive potential P_a = ½ tr(I − R_dᵀR_g) = φ(R_dᵀR_g) (PET-ERG paper, Sec. III-B.2;
+/// paper-notes "Attractive field").
+[[nodiscard]] inline double attractive_potential(const Mat3& R_g, const Mat3& R_d) noexcept {
+  return lie::phi(R_d.transpose() * R_g);
+}
+
+/// Attractive field ρ_a = −grad P_a = sk(R_gᵀR_d)^∨ (PET-ERG paper, Sec. III-B.2; paper-notes).
+[[nodiscard]] inline Vec3 attractive_field(const Mat3& R_g, const Mat3& R_d) noexcept {
+  return lie::vee(lie::sk(R_g.transpose() * R_d));
+}
+
+/// Gradient of c(R_g) = a_cᵀR_g a_b: g_c = a_b × (R_gᵀa_c), ‖g_c‖ = sin β_g (constraint (2b) of
+/// the PET-ERG paper; paper-notes "Constraint gradient").
+[[nodiscard]] inline Vec3 constraint_gradient(const ConeConstraint& cone, const Mat3& R_g) noexcept {
+  return cone.axis_b.cross(R_g.transpose() * cone.direction_i);
+}
+
+/// P_r(c) = k_r (ζ − c)²/(c − δ) on δ < c < ζ, 0 for c ≥ ζ (repulsive term of P, PET-ERG paper
+/// Sec. III-B.2; the form is ours, docs/pet-erg.md).
+[[nodiscard]] inline double repulsive_potential_of_cosine(const ConeConstraint& cone,
+                                                          double c) noexcept {
+  if (c >= cone.zeta) {
+    return 0.0;
+  }
+  const double gap = std::max(c - cone.delta, kRepulsiveFloor);
+  const double d = cone.zeta - c;
+  return cone.repulsive_gain * d * d / gap;
+}
+
+/// dP_r/dc = −k_r (ζ − c)(ζ + c − 2δ)/(c − δ)² (≤ 0; zero for c ≥ ζ) (PET-ERG paper
+/// Sec. III-B.2; docs/pet-erg.md).
+[[nodiscard]] inline double repulsive_potential_slope(const ConeConstraint& cone, double c) noexcept {
+  if (c >= cone.zeta) {
+    return 0.0;
+  }
+  const double gap = std::max(c - cone.delta, kRepulsiveFloor);
+  return -cone.repulsive_gain * (cone.zeta - c) * (cone.zeta + c - 2.0 * cone.delta) / (gap * gap);
+}
+
+/// P_r(R_g) of one cone (PET-ERG paper Sec. III-B.2).
+[[nodiscard]] inline double repulsive_potential(const ConeConstraint& cone, const Mat3& R_g) noexcept {
+  return repulsive_potential_of_cosine(cone, cone_cosine(cone, R_g));
+}
+
+/// Repulsive field of one cone ρ_r = −grad P_r = −(dP_r/dc) g_c (PET-ERG paper Sec. III-B.2).
+[[nodiscard]] inline Vec3 repulsive_field(const ConeConstraint& cone, const Mat3& R_g) noexcept {
+  const double c = cone_cosine(cone, R_g);
+  if (c >= cone.zeta) {
+    return Vec3::Zero();
+  }
+  return -repulsive_potential_slope(cone, c) * constraint_gradient(cone, R_g);
+}
+
+/// Total potential P = P_a + Σ_i P_r,i (PET-ERG paper Sec. III-B.2; sum over cones: issue 3).
+[[nodiscard]] inline double navigation_potential(std::span<const ConeConstraint> cones,
+                                                 const Mat3& R_g, const Mat3& R_d) noexcept {
+  double p = attractive_potential(R_g, R_d);
+  for (const ConeConstraint& cone : cones) {
+    p += repulsive_potential(cone, R_g);
+  }
+  return p;
+}
+
+/// Navigation field ρ_n(R_d, R_g) = −grad P = ρ_a + Σ_i ρ_r,i (PET-ERG paper Sec. III-B.2).
+[[nodiscard]] inline Vec3 navigation_field(std::span<const ConeConstraint> cones, const Mat3& R_g,
+                                           const Mat3& R_d) noexcept {
+  Vec3 rho = attractive_field(R_g, R_d);
+  for (const ConeConstraint& cone : cones) {
+    rho += repulsive_field(cone, R_g);
+  }
+  return rho;
+}
+
+}  // namespace attiguard::governor

@@ -1,0 +1,246 @@
+#include "attiguard/reach/conreach.hpp"
+
+#include <chrono>
+#include <limits>
+#include <span>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/integrate/integrator.hpp"
+#include "attiguard/integrate/product_state.hpp"
+#include "attiguard/reach/metrics.hpp"
+
+namespace attiguard::reach {
+
+void simulate(const ClosedLoop& loop, const Mat3& R0, const Vec3& omega0,
+              const std::vector<double>& times, double h,
+              const std::function<void(std::size_t, const Mat3&, const Vec3&)>& on_stop) {
+  using State = integrate::ProductState<1, 3>;
+  State y;
+  y.R[0] = R0;
+  y.x = omega0;
+  std::size_t first = 0;
+  if (!times.empty() && times.front() <= 0.0) {
+    on_stop(0, R0, omega0);
+    first = 1;
+  }
+  if (first >= times.size()) return;
+  integrate::IntegratorSettings s;
+  s.method = integrate::Method::rkmk4;
+  s.step = h;
+  auto f = [&loop](double, const State& st) {
+    State::Tangent d;
+    d.head<3>() = st.x;
+    d.tail<3>() = loop.omega_dot(st.R[0], st.x);
+    return d;
+  };
+  std::size_t idx = first;
+  const std::span<const double> stops(times.data() + first, times.size() - first);
+  integrate::integrate(
+      f, y, 0.0, stops, s,
+      [&](double, const State& st) {
+        on_stop(idx++, st.R[0], st.x);
+        return true;
+      },
+      [](double, const State&) {});
+}
+
+namespace {
+
+void check_settings(const InitialSet& init, const ConReachSettings& s) {
+  auto bad = [](const std::string& m) { throw InputError("reach: " + m); };
+  if (!(s.horizon > 0.0) || !std::isfinite(s.horizon)) bad("horizon must be a positive number");
+  if (s.steps < 1) bad("steps must be >= 1");
+  if (s.substeps < 1) bad("substeps must be >= 1");
+  if (!(s.integrator_step > 0.0)) bad("integrator_step must be positive");
+  if (s.line_search_steps < 1) bad("line_search_steps must be >= 1");
+  if (!(s.rate_step > 0.0)) bad("rate_step must be positive");
+  if (!(s.attitude_floor_ratio > 0.0 && s.attitude_floor_ratio <= 1.0)) {
+    bad("attitude_floor_ratio must be in (0, 1]");
+  }
+  if (!init.R0.allFinite() || !lie::is_rotation(init.R0, 1e-9)) bad("initial attitude is not a rotation");
+  if (!init.omega0.allFinite()) bad("initial omega_b is not finite");
+  if (!(init.attitude_radius >= 0.0) || !(init.attitude_radius < std::numbers::pi)) {
+    bad("initial attitude_radius must be in [0, pi)");
+  }
+  if (!(init.omega_radius >= 0.0) || !std::isfinite(init.omega_radius)) {
+    bad("initial omega_radius must be a non-negative number");
+  }
+  if (init.attitude_radius + init.omega_radius <= 0.0) bad("the initial set must not be a single point");
+  require_spd(init.P0, "reach: initial metric P0");
+}
+
+struct Choice {
+  MetricSolution sol;
+  std::vector<RateTrial> trials;
+  bool fallback{false};
+  int solves{0};
+  double c_identity{0.0};
+};
+
+Choice choose_metric(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, double r, double dt,
+                     const ConReachSettings& s, const MetricSdpSettings& sdp) {
+  Choice ch;
+  ch.c_identity = identity_metric_rate(enc);
+  auto size_of = [&](const MetricSolution& m) {
+    return r * std::exp(m.c * dt) / std::sqrt(std::min(lambda_min(m.Q), lambda_min(m.P)));
+  };
+  bool have = false;
+  if (s.mode == RateMode::line_search) {
+    for (int j = 0; j < s.line_search_steps; ++j) {
+      const double c = ch.c_identity - j * s.rate_step;
+      MetricSolution m = solve_metric(enc, Q, P, c, MetricObjective::max_trace_q, sdp);
+      ++ch.solves;
+      const bool diag_ok = m.ok && m.Q.diagonal().minCoeff() >= s.min_diagonal &&
+                           m.P.diagonal().minCoeff() >= s.min_diagonal;
+      ch.trials.push_back({c, m.ok, m.ok ? size_of(m) : 0.0});
+      if (!diag_ok) break;
+      ch.sol = m;
+      have = true;
+    }
+  } else {
+    double best = std::numeric_limits<double>::infinity();
+    int worse = 0;  // consecutive candidates worse than the best: stop after 2
+    for (int j = 0; j < s.min_enclosure_candidates && worse < 2; ++j) {
+      const double c = ch.c_identity - j * s.rate_step;
+      MetricSolution m = solve_metric(enc, Q, P, c, MetricObjective::max_min_eigenvalue, sdp);
+      ++ch.solves;
+      ch.trials.push_back({c, m.ok, m.ok ? size_of(m) : 0.0});
+      if (!m.ok) break;
+      if (size_of(m) < best) {
+        best = size_of(m);
+        ch.sol = m;
+        have = true;
+        worse = 0;
+      } else {
+        ++worse;
+      }
+    }
+    const MetricSolution fb = fallback_metric(enc, Q, P);
+    if (fb.ok && (!have || size_of(fb) < best)) {
+      ch.sol = fb;
+      ch.fallback = true;
+      have = true;
+    }
+  }
+  if (!have) {
+    ch.sol = fallback_metric(enc, Q, P);
+    ch.fallback = true;
+  }
+  if (!ch.sol.ok) throw NumericalError("ConReach: no certified contraction metric (" + ch.sol.message + ")");
+  return ch;
+}
+
+}  // namespace
+
+ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
+                         const ConReachSettings& s) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  check_settings(initial, s);
+  ReachResult res;
+  res.initial = initial;
+  res.P0 = initial.P0;
+  res.r0 = std::sqrt(initial.attitude_radius * initial.attitude_radius +
+                     lambda_max(initial.P0) * initial.omega_radius * initial.omega_radius);
+  const int N = s.steps;
+  const int m = s.substeps;
+  const double dt = s.horizon / N;
+
+  // Nominal at every sub-step boundary, and a half-step run for the error allowance.
+  std::vector<double> times;
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < m; ++j) times.push_back(i * dt + j * dt / m);
+  }
+  times.push_back(s.horizon);
+  res.nominal.resize(times.size());
+  std::vector<NominalPoint> fine(times.size());
+  simulate(loop, initial.R0, initial.omega0, times, s.integrator_step,
+           [&](std::size_t k, const Mat3& R, const Vec3& w) { res.nominal[k] = {times[k], R, w}; });
+  simulate(loop, initial.R0, initial.omega0, times, 0.5 * s.integrator_step,
+           [&](std::size_t k, const Mat3& R, const Vec3& w) { fine[k] = {times[k], R, w}; });
+  for (const auto& p : res.nominal) {
+    if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
+  }
+
+  Mat3 Q = Mat3::Identity();
+  Mat3 P = initial.P0;
+  double r = res.r0;
+  const double a = initial.attitude_radius;
+  const double b = initial.omega_radius;
+  Deviation carried;
+  carried << b, b, b, b, a;
+  const bool att_dep = loop.lmi_depends_on_attitude();
+
+  for (int i = 0; i < N; ++i) {
+    ReachStep st;
+    st.index = i;
+    st.t0 = times[static_cast<std::size_t>(i * m)];
+    st.t1 = times[static_cast<std::size_t>((i + 1) * m)];
+    const std::span<const NominalPoint> span(res.nominal.data() + static_cast<std::ptrdiff_t>(i) * m,
+                                             static_cast<std::size_t>(m) + 1);
+    Deviation ball;
+    ball.head<3>() = p_ball_half_widths(P, r);
+    ball(3) = r / std::sqrt(lambda_min(P));
+    ball(4) = r / std::sqrt(lambda_min(Q));
+    const Deviation z_state = carried.cwiseMin(ball);
+    const TubeResult state_tube = propagate_tube(loop, span, z_state);
+    carried = state_tube.end;
+    st.state_tube = state_tube.segments;
+
+    MetricSdpSettings sdp = s.sdp;
+    double q_floor = att_dep ? s.attitude_floor_ratio * lambda_min(Q) : s.sdp.q_floor;
+    Choice ch;
+    TubeResult lmi_tube;
+    for (int pass = 0; pass < 2; ++pass) {
+      Deviation z_lmi = z_state;
+      if (!loop.omega_flow_affine()) z_lmi.head<4>() = ball.head<4>();
+      if (att_dep) z_lmi(4) = r / std::sqrt(q_floor);
+      lmi_tube = (z_lmi == z_state) ? state_tube : propagate_tube(loop, span, z_lmi);
+      const LmiEnclosure enc = loop.lmi_enclosure(lmi_tube.attitude_hull, lmi_tube.omega_hull);
+      sdp.q_floor = q_floor;
+      ch = choose_metric(enc, Q, P, r, dt, s, sdp);
+      st.lmi_exact = enc.exact;
+      st.lmi_rho = enc.rho;
+      const double lq = lambda_min(ch.sol.Q);
+      if (!att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
+      if (pass == 1) throw NumericalError("ConReach: attitude enclosure of the metric ball is inconsistent");
+      q_floor = lq * (1.0 - 1e-9);  // fallback metric below the floor: redo U_i with its λ_min
+    }
+    st.omega_box = lmi_tube.omega_hull;
+    st.attitude_box = lmi_tube.attitude_hull;
+    st.c_identity = ch.c_identity;
+    st.c = ch.sol.c;
+    st.Q = ch.sol.Q;
+    st.P = ch.sol.P;
+    st.fallback = ch.fallback;
+    st.sdp_solves = ch.solves;
+    st.trials = ch.trials;
+    res.sdp_solves += ch.solves;
+
+    const std::size_t k1 = static_cast<std::size_t>((i + 1) * m);
+    const double err = lie::distance(res.nominal[k1].R, fine[k1].R) +
+                       (res.nominal[k1].omega - fine[k1].omega).norm();
+    st.numerical_allowance = 10.0 * err * std::sqrt(std::max(lambda_max(st.Q), lambda_max(st.P))) + 1e-12;
+    st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
+    st.R = res.nominal[k1].R;
+    st.omega = res.nominal[k1].omega;
+    st.attitude_radius = attitude_enclosure_radius(st.Q, st.r);
+    st.omega_half_widths = p_ball_half_widths(st.P, st.r);
+    if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite()) {
+      std::ostringstream os;
+      os << "ConReach: non-finite ball at t = " << st.t1 << " s";
+      throw NumericalError(os.str());
+    }
+    Q = st.Q;
+    P = st.P;
+    r = st.r;
+    res.steps.push_back(std::move(st));
+  }
+  res.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace attiguard::reach

@@ -1,0 +1,106 @@
+#pragma once
+/// @file conreach.hpp
+/// The ConReach loop (contraction-reachability paper, Algorithm 1): metric balls
+/// B_{Q_i×P_i}((R_i, ω_i), r_i) along a nominal simulation, r_{i+1} = r_i e^{c_{i+1}(t_{i+1}−t_i)}
+/// (+ a numerical-error allowance for the nominal), with (c, Q, P) per step from the SDP (20)
+/// over the enclosure U_i of tube.hpp, chosen either by the paper's line search or by
+/// minimising the bi-invariant enclosure of the resulting ball.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "attiguard/reach/closed_loop.hpp"
+#include "attiguard/reach/contraction_sdp.hpp"
+#include "attiguard/reach/tube.hpp"
+
+namespace attiguard::reach {
+
+/// The initial set B_I(R0, attitude_radius) × B_I(ω0, omega_radius) (bi-invariant and
+/// Euclidean balls, paper Sec. 6).
+struct InitialSet {
+  Mat3 R0{Mat3::Identity()};
+  double attitude_radius{0.0};
+  Vec3 omega0{Vec3::Zero()};
+  double omega_radius{0.0};
+  /// P_0 of Algorithm 1 (SPD); the covering ball is B_{I×P_0}((R0, ω0), √(a² + λ_max(P_0) b²)).
+  Mat3 P0{Mat3::Identity()};
+};
+
+/// How the contraction rate of each step is chosen.
+enum class RateMode {
+  line_search,    ///< Algorithm 1 as the authors run it (paper-notes item 1)
+  min_enclosure,  ///< the (c, Q, P) giving the smallest bi-invariant enclosure radius
+};
+
+struct ConReachSettings {
+  double horizon{4.0};            ///< T [s]
+  int steps{40};                  ///< N
+  RateMode mode{RateMode::line_search};
+  int line_search_steps{3};       ///< N_s: rates c_max, c_max − δ, …, c_max − (N_s − 1)δ
+  double rate_step{0.01};         ///< δ [1/s]
+  double min_diagonal{0.01};      ///< line search stops when a diagonal entry of Q or P is below
+  int min_enclosure_candidates{30};  ///< most rates tried by min_enclosure (step δ from c_max; stops after 2 worse)
+  int substeps{10};               ///< sub-steps of each [t_i, t_{i+1}] for the tube
+  double integrator_step{1e-3};   ///< RKMK4 step of the nominal [s]
+  /// For closed loops whose LMI depends on R: Q ⪰ ratio·λ_min(Q_i)·I in the SDP, so that the
+  /// G_Q-geodesics of the ball stay in the attitude ball of radius r_i/√(ratio·λ_min(Q_i)).
+  double attitude_floor_ratio{0.5};
+  MetricSdpSettings sdp;
+};
+
+/// One rate tried at one step.
+struct RateTrial {
+  double c{0.0};
+  bool feasible{false};
+  double enclosure_radius{0.0};  ///< r_{i+1}/√min(λ_min Q, λ_min P) when feasible
+};
+
+/// Step i of Algorithm 1: from the ball at t_i to the ball at t_{i+1}.
+struct ReachStep {
+  int index{0};
+  double t0{0.0};
+  double t1{0.0};
+  Box3 omega_box;                 ///< U_i, ω part (the LMI's search region)
+  AttitudeBall attitude_box;      ///< U_i, attitude part
+  std::vector<TubeSegment> state_tube;  ///< enclosure of the reachable states over [t_i, t_{i+1}]
+  double c_identity{0.0};         ///< c_max: smallest feasible rate with Q = P = I
+  double c{0.0};                  ///< c_{i+1}
+  Mat3 Q{Mat3::Identity()};       ///< Q_{i+1}
+  Mat3 P{Mat3::Identity()};       ///< P_{i+1}
+  double r{0.0};                  ///< r_{i+1}
+  Mat3 R{Mat3::Identity()};       ///< nominal R_{i+1}
+  Vec3 omega{Vec3::Zero()};       ///< nominal ω_{i+1}
+  double attitude_radius{0.0};    ///< r_{i+1}/√λ_min(Q_{i+1}): bi-invariant attitude enclosure
+  Vec3 omega_half_widths{Vec3::Zero()};  ///< half-widths of the box around the P-ball
+  double numerical_allowance{0.0};  ///< added to r for the nominal's integration error
+  bool lmi_exact{false};
+  double lmi_rho{0.0};
+  bool fallback{false};           ///< no SDP accepted: Q = P = sI at c_max
+  int sdp_solves{0};
+  std::vector<RateTrial> trials;
+};
+
+struct ReachResult {
+  InitialSet initial;
+  Mat3 Q0{Mat3::Identity()};
+  Mat3 P0{Mat3::Identity()};
+  double r0{0.0};
+  std::vector<ReachStep> steps;
+  std::vector<NominalPoint> nominal;  ///< at every sub-step boundary
+  int sdp_solves{0};
+  double wall_time_s{0.0};
+};
+
+/// Runs ConReach. Throws InputError for invalid settings, NumericalError for numerical failure
+/// (NaN, diverging tube or nominal).
+[[nodiscard]] ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
+                                       const ConReachSettings& settings);
+
+/// Simulates X from (R0, ω0) with RKMK4 (step h), calling on_stop(i, R, ω) exactly at every
+/// times[i] (increasing, > t0 = 0 unless equal: times[0] = 0 is reported first).
+void simulate(const ClosedLoop& loop, const Mat3& R0, const Vec3& omega0,
+              const std::vector<double>& times, double h,
+              const std::function<void(std::size_t, const Mat3&, const Vec3&)>& on_stop);
+
+}  // namespace attiguard::reach

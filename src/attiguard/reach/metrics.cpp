@@ -1,0 +1,77 @@
+#include "attiguard/reach/metrics.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "attiguard/core/errors.hpp"
+
+namespace attiguard::reach {
+
+namespace {
+Eigen::Vector3d eigenvalues(const Mat3& M) {
+  const Mat3 S = 0.5 * (M + M.transpose());
+  Eigen::SelfAdjointEigenSolver<Mat3> es(S, Eigen::EigenvaluesOnly);
+  return es.eigenvalues();
+}
+}  // namespace
+
+double lambda_min(const Mat3& M) { return eigenvalues(M)(0); }
+double lambda_max(const Mat3& M) { return eigenvalues(M)(2); }
+
+bool is_spd(const Mat3& M) {
+  if (!M.allFinite()) return false;
+  const double scale = M.cwiseAbs().maxCoeff();
+  if ((M - M.transpose()).cwiseAbs().maxCoeff() > 1e-12 * std::max(1.0, scale)) return false;
+  return lambda_min(M) > 0.0;
+}
+
+void require_spd(const Mat3& M, const std::string& what) {
+  if (!M.allFinite()) {
+    throw InputError(what + ": non-finite entry (must be a symmetric positive definite matrix)");
+  }
+  if (!is_spd(M)) {
+    const bool symmetric = (M - M.transpose()).cwiseAbs().maxCoeff() <=
+                           1e-12 * std::max(1.0, M.cwiseAbs().maxCoeff());
+    throw InputError(what + (symmetric ? ": not positive definite (smallest eigenvalue " +
+                                             std::to_string(lambda_min(M)) + ")"
+                                       : ": not symmetric") +
+                     " (must be symmetric positive definite)");
+  }
+}
+
+double p_distance(const Mat3& P, const Vec3& x1, const Vec3& x2) {
+  const Vec3 d = x1 - x2;
+  return std::sqrt(std::max(0.0, d.dot(P * d)));
+}
+
+double dq_upper(const Mat3& Q, const Mat3& R1, const Mat3& R2) {
+  const Vec3 w = lie::log(R1.transpose() * R2);
+  return std::sqrt(std::max(0.0, w.dot(Q * w)));
+}
+
+double dq_lower(const Mat3& Q, const Mat3& R1, const Mat3& R2) {
+  return std::sqrt(std::max(0.0, lambda_min(Q))) * lie::distance(R1, R2);
+}
+
+double product_distance_upper(const ProductMetric& m, const Mat3& R1, const Vec3& w1,
+                              const Mat3& R2, const Vec3& w2) {
+  const double a = dq_upper(m.Q, R1, R2);
+  const double b = p_distance(m.P, w1, w2);
+  return std::sqrt(a * a + b * b);
+}
+
+double product_distance_lower(const ProductMetric& m, const Mat3& R1, const Vec3& w1,
+                              const Mat3& R2, const Vec3& w2) {
+  const double a = dq_lower(m.Q, R1, R2);
+  const double b = p_distance(m.P, w1, w2);
+  return std::sqrt(a * a + b * b);
+}
+
+double attitude_enclosure_radius(const Mat3& Q, double r) { return r / std::sqrt(lambda_min(Q)); }
+
+Vec3 p_ball_half_widths(const Mat3& P, double r) {
+  const Mat3 Pinv = P.inverse();
+  return r * Pinv.diagonal().cwiseMax(0.0).cwiseSqrt();
+}
+
+}  // namespace attiguard::reach

@@ -1,0 +1,44 @@
+#pragma once
+/// @file parallel.hpp
+/// parallel_for over [0, n) with std::thread workers; the first exception is rethrown.
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace attiguard::reach {
+
+/// Runs fn(i) for i in [0, n) on `threads` workers (0: hardware concurrency, at most n).
+template <class Fn>
+void parallel_for(long n, int threads, Fn&& fn) {
+  if (n <= 0) return;
+  long workers = threads > 0 ? threads : static_cast<long>(std::max(1u, std::thread::hardware_concurrency()));
+  workers = std::min(workers, n);
+  std::atomic<long> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto work = [&]() {
+    for (long i = next++; i < n; i = next++) {
+      try {
+        fn(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = n;
+      }
+    }
+  };
+  if (workers == 1) {
+    work();
+  } else {
+    std::vector<std::thread> pool;
+    for (long w = 0; w < workers; ++w) pool.emplace_back(work);
+    for (auto& t : pool) t.join();
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace attiguard::reach

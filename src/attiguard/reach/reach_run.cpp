@@ -1,0 +1,222 @@
+#include "attiguard/reach/reach_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/io/csv_writer.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/reach/boundary.hpp"
+#include "attiguard/reach/geodesic.hpp"
+#include "attiguard/reach/metrics.hpp"
+#include "attiguard/reach/partition.hpp"
+#include "attiguard/reach/sdp_solver.hpp"
+
+namespace attiguard::reach {
+
+namespace {
+
+nlohmann::json mat_json(const Mat3& M) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < 3; ++i) a.push_back({M(i, 0), M(i, 1), M(i, 2)});
+  return a;
+}
+nlohmann::json vec_json(const Vec3& v) { return {v(0), v(1), v(2)}; }
+
+/// The exp chart in which every attitude ball of every cell fits best (smallest max of
+/// ‖Ψ_i(R_c)‖ + r/√λ_min(Q)); NumericalError when none holds them all.
+int choose_chart(const std::vector<ReachResult>& results) {
+  double best = std::numeric_limits<double>::infinity();
+  int chart = 0;
+  for (int c = 0; c < 4; ++c) {
+    double worst = 0.0;
+    for (const ReachResult& res : results) {
+      worst = std::max(worst, chart_coordinates(c, res.nominal.front().R).norm() +
+                                  attitude_enclosure_radius(res.Q0, res.r0));
+      for (const ReachStep& st : res.steps) {
+        worst = std::max(worst, chart_coordinates(c, st.R).norm() + st.attitude_radius);
+      }
+    }
+    if (worst < best) {
+      best = worst;
+      chart = c;
+    }
+  }
+  if (!(best < std::numbers::pi - 1e-3)) {
+    std::ostringstream os;
+    os << "the attitude balls do not fit in a single exp chart (needs " << best
+       << " rad >= pi): partition the initial set or shorten the horizon";
+    throw NumericalError(os.str());
+  }
+  return chart;
+}
+
+}  // namespace
+
+nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  io::ensure_directory(out_dir);
+  const long solves0 = sdp_solve_count();
+  const ClosedLoop& loop = *sc.loop;
+  const std::vector<InitialSet> cells =
+      partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);
+  const std::vector<ReachResult> results = run_partitioned(loop, cells, sc.settings, sc.threads);
+  const double analysis_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const SafetyVerdict verdict = verify_safety(sc.safety, results);
+
+  nlohmann::json j;
+  j["name"] = sc.name;
+  j["kind"] = "reach";
+  j["model"] = sc.model;
+  j["rate_mode"] = sc.settings.mode == RateMode::line_search ? "line_search" : "min_enclosure";
+  j["horizon"] = sc.settings.horizon;
+  j["n_steps"] = sc.settings.steps;
+  j["cells"] = cells.size();
+  const ReachResult& r0 = results.front();
+  j["initial"] = {{"attitude_radius", sc.initial.attitude_radius},
+                  {"omega_radius", sc.initial.omega_radius},
+                  {"r0", r0.r0}, {"Q0", mat_json(r0.Q0)}, {"P0", mat_json(r0.P0)}};
+  nlohmann::json steps = nlohmann::json::array();
+  for (const ReachStep& st : r0.steps) {
+    nlohmann::json trials = nlohmann::json::array();
+    for (const RateTrial& t : st.trials) {
+      trials.push_back({{"c", t.c}, {"feasible", t.feasible}, {"enclosure_radius", t.enclosure_radius}});
+    }
+    steps.push_back({{"index", st.index}, {"t", st.t0}, {"t_end", st.t1}, {"c", st.c},
+                     {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"P", mat_json(st.P)},
+                     {"r", st.r},
+                     {"omega_box", {{"lower", vec_json(st.omega_box.lo)}, {"upper", vec_json(st.omega_box.hi)}}},
+                     {"attitude_box_radius", st.attitude_box.radius},
+                     {"attitude_radius", st.attitude_radius},
+                     {"omega_half_widths", vec_json(st.omega_half_widths)},
+                     {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
+                     {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
+                     {"numerical_allowance", st.numerical_allowance},
+                     {"safe", verdict.step_safe.empty() ? true : static_cast<bool>(verdict.step_safe[static_cast<std::size_t>(st.index)])},
+                     {"trials", trials}});
+  }
+  j["steps"] = steps;
+  nlohmann::json finals = nlohmann::json::array();
+  for (const ReachResult& res : results) {
+    const ReachStep& last = res.steps.back();
+    finals.push_back({{"r", last.r}, {"attitude_radius", last.attitude_radius},
+                      {"omega_half_widths", vec_json(last.omega_half_widths)},
+                      {"wall_time_s", res.wall_time_s}});
+  }
+  j["final"] = finals;
+  j["verdict"] = !verdict.requested ? "not_requested" : (verdict.proved ? "safe" : "cannot_prove");
+  j["first_failure_time"] = verdict.first_failure_time >= 0.0 ? nlohmann::json(verdict.first_failure_time)
+                                                              : nlohmann::json(nullptr);
+  if (!verdict.reason.empty()) j["safety_reason"] = verdict.reason;
+  j["sdp_solves"] = sdp_solve_count() - solves0;
+  j["wall_time_s"] = analysis_time;
+
+  // CSV outputs.
+  {
+    io::CsvWriter csv(out_dir / "trajectory.csv",
+                      {"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z"});
+    for (const NominalPoint& p : r0.nominal) {
+      const Eigen::Vector4d q = lie::rotation_to_quat(p.R);
+      const std::array<double, 8> row{p.t, q(0), q(1), q(2), q(3), p.omega(0), p.omega(1), p.omega(2)};
+      csv.row(row);
+    }
+    csv.close();
+  }
+  {
+    io::CsvWriter csv(out_dir / "steps.csv",
+                      {"cell", "step", "t", "t_end", "c", "r", "attitude_radius", "omega_lo_x",
+                       "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y", "omega_hi_z", "Q_xx",
+                       "Q_yy", "Q_zz", "Q_xy", "Q_xz", "Q_yz", "P_xx", "P_yy", "P_zz", "P_xy",
+                       "P_xz", "P_yz", "center_omega_x", "center_omega_y", "center_omega_z"});
+    for (std::size_t c = 0; c < results.size(); ++c) {
+      for (const ReachStep& st : results[c].steps) {
+        const Mat3& Q = st.Q;
+        const Mat3& P = st.P;
+        const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), st.t0, st.t1,
+                                      st.c, st.r, st.attitude_radius, st.omega_box.lo(0),
+                                      st.omega_box.lo(1), st.omega_box.lo(2), st.omega_box.hi(0),
+                                      st.omega_box.hi(1), st.omega_box.hi(2), Q(0, 0), Q(1, 1), Q(2, 2),
+                                      Q(0, 1), Q(0, 2), Q(1, 2), P(0, 0), P(1, 1), P(2, 2), P(0, 1),
+                                      P(0, 2), P(1, 2), st.omega(0), st.omega(1), st.omega(2)};
+        csv.row(row);
+      }
+    }
+    csv.close();
+  }
+  {
+    io::CsvWriter csv(out_dir / "tube.csv", {"cell", "step", "t0", "t1", "attitude_radius", "omega_lo_x",
+                                             "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y",
+                                             "omega_hi_z"});
+    for (std::size_t c = 0; c < results.size(); ++c) {
+      for (const ReachStep& st : results[c].steps) {
+        for (const TubeSegment& s : st.state_tube) {
+          const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), s.t0, s.t1,
+                                        s.attitude.radius, s.omega.lo(0), s.omega.lo(1), s.omega.lo(2),
+                                        s.omega.hi(0), s.omega.hi(1), s.omega.hi(2)};
+          csv.row(row);
+        }
+      }
+    }
+    csv.close();
+  }
+
+  // Boundary representation in one exp chart (needs every ball inside it).
+  const int chart = choose_chart(results);
+  j["chart"] = chart;
+  if (sc.boundary_points > 0) {
+    io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
+    for (std::size_t c = 0; c < results.size(); ++c) {
+      const ReachResult& res = results[c];
+      auto emit = [&](int step, double t, const Mat3& Q, double r, const Mat3& Rc) {
+        for (const Vec3& p : ball_boundary(Q, r, Rc, chart, sc.boundary_points)) {
+          const std::array<double, 7> row{static_cast<double>(c), static_cast<double>(step), t,
+                                          static_cast<double>(chart), p(0), p(1), p(2)};
+          csv.row(row);
+        }
+      };
+      emit(0, 0.0, res.Q0, res.r0, res.nominal.front().R);
+      for (const ReachStep& st : res.steps) emit(st.index + 1, st.t1, st.Q, st.r, st.R);
+    }
+    csv.close();
+  }
+
+  // Soundness sampling.
+  if (sc.soundness.samples > 0) {
+    const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
+    j["soundness"] = {{"samples", rep.samples}, {"inside", rep.inside}, {"max_ratio", rep.max_ratio},
+                      {"wall_time_s", rep.wall_time_s}};
+    io::CsvWriter csv(out_dir / "samples.csv",
+                      {"sample", "t", "r_x", "r_y", "r_z", "omega_x", "omega_y", "omega_z"});
+    for (std::size_t s = 0; s < rep.kept.size(); ++s) {
+      const SampleTrajectory& tr = rep.kept[s];
+      for (std::size_t k = 0; k < tr.t.size(); ++k) {
+        const Vec3 rr = chart_coordinates(chart, tr.R[k]);
+        const std::array<double, 8> row{static_cast<double>(s), tr.t[k], rr(0), rr(1), rr(2),
+                                        tr.omega[k](0), tr.omega[k](1), tr.omega[k](2)};
+        csv.row(row);
+      }
+    }
+    csv.close();
+    io::write_json(out_dir / "reach.json", j);
+    if (rep.inside != rep.samples) {
+      std::ostringstream os;
+      os << "soundness check failed: " << rep.samples - rep.inside << " of " << rep.samples
+         << " sampled trajectories leave their ball (first at t = " << rep.first_violation_time << " s)";
+      throw NumericalError(os.str());
+    }
+  } else {
+    j["soundness"] = {{"samples", 0}, {"inside", 0}};
+  }
+  io::write_json(out_dir / "reach.json", j);
+  if (verdict.requested && !verdict.proved) {
+    throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);
+  }
+  return j;
+}
+
+}  // namespace attiguard::reach

@@ -1,0 +1,100 @@
+#include "attiguard/reach/soundness.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <random>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/reach/metrics.hpp"
+#include "attiguard/reach/parallel.hpp"
+
+namespace attiguard::reach {
+
+namespace {
+/// Relative tolerance of the ball test: boundary samples of the initial set lie exactly on the
+/// sphere of the initial ball, where rounding gives ratios of 1 ± 1e-16.
+constexpr double kRoundoff = 1e-12;
+
+Vec3 sample_ball(std::mt19937_64& g, double radius, bool on_boundary) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Vec3 v(n(g), n(g), n(g));
+  while (v.norm() < 1e-12) v = Vec3(n(g), n(g), n(g));
+  const double s = on_boundary ? 1.0 : std::cbrt(u(g));
+  return v.normalized() * radius * s;
+}
+}  // namespace
+
+SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
+                                const std::vector<InitialSet>& cells,
+                                const std::vector<ReachResult>& results,
+                                const SoundnessSettings& settings) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  if (cells.size() != results.size() || cells.empty()) {
+    throw NumericalError("soundness check: cells and results do not match");
+  }
+  SoundnessReport rep;
+  rep.samples = settings.samples;
+  const ReachResult& r0 = results.front();
+  std::vector<double> times;
+  for (const auto& p : r0.nominal) times.push_back(p.t);
+  const std::size_t m = (times.size() - 1) / r0.steps.size();
+  std::atomic<long> inside{0};
+  std::mutex mutex;
+  double max_ratio = 0.0;
+  double first_violation = -1.0;
+  rep.kept.resize(static_cast<std::size_t>(std::min<long>(settings.keep, settings.samples)));
+
+  parallel_for(settings.samples, settings.threads, [&](long s) {
+    std::mt19937_64 g(settings.seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(s));
+    const bool boundary = (s % 2) == 0;
+    const Mat3 R = whole.R0 * lie::exp(sample_ball(g, whole.attitude_radius, boundary));
+    const Vec3 w = whole.omega0 + sample_ball(g, whole.omega_radius, boundary);
+    // The cell whose initial set contains the sample.
+    std::size_t cell = cells.size();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (lie::distance(cells[c].R0, R) <= cells[c].attitude_radius * (1 + 1e-12) + 1e-15 &&
+          (w - cells[c].omega0).norm() <= cells[c].omega_radius * (1 + 1e-12) + 1e-15) {
+        cell = c;
+        break;
+      }
+    }
+    if (cell == cells.size()) throw NumericalError("soundness check: sample outside every cell");
+    const ReachResult& res = results[cell];
+    double worst = 0.0;
+    double violation = -1.0;
+    const bool keep = s < static_cast<long>(rep.kept.size());
+    SampleTrajectory traj;
+    simulate(loop, R, w, times, settings.step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
+      if (keep) {
+        traj.t.push_back(times[k]);
+        traj.R.push_back(Rk);
+        traj.omega.push_back(wk);
+      }
+      if (k % m != 0) return;
+      const std::size_t i = k / m;
+      double ratio;
+      if (i == 0) {
+        ratio = product_distance_upper({res.Q0, res.P0}, res.nominal[0].R, res.nominal[0].omega, Rk, wk) / res.r0;
+      } else {
+        const ReachStep& st = res.steps[i - 1];
+        ratio = product_distance_upper({st.Q, st.P}, st.R, st.omega, Rk, wk) / st.r;
+      }
+      if (!(ratio <= 1.0 + kRoundoff) && violation < 0.0) violation = times[k];
+      worst = std::max(worst, std::isfinite(ratio) ? ratio : 1e300);
+    });
+    if (violation < 0.0) ++inside;
+    std::lock_guard<std::mutex> lock(mutex);
+    max_ratio = std::max(max_ratio, worst);
+    if (violation >= 0.0 && (first_violation < 0.0 || violation < first_violation)) first_violation = violation;
+    if (keep) rep.kept[static_cast<std::size_t>(s)] = std::move(traj);
+  });
+  rep.inside = inside.load();
+  rep.max_ratio = max_ratio;
+  rep.first_violation_time = first_violation;
+  rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return rep;
+}
+
+}  // namespace attiguard::reach

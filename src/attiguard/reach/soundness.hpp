@@ -1,0 +1,46 @@
+#pragma once
+/// @file soundness.hpp
+/// Empirical soundness check of ConReach results: simulate sampled initial states of the whole
+/// initial set and verify that at every t_i each state lies in the computed ball of its cell,
+/// using the upper bound of d_Q (metrics.hpp), i.e. √(d_Q,up² + d_P²) ≤ r_i. Half of the samples
+/// lie on the boundary of the initial set (‖log(R0ᵀR)‖ = a, ‖ω − ω0‖ = b), the rest inside.
+
+#include <cstdint>
+#include <vector>
+
+#include "attiguard/reach/conreach.hpp"
+
+namespace attiguard::reach {
+
+struct SoundnessSettings {
+  long samples{10000};
+  std::uint64_t seed{1};
+  double step{0.01};  ///< RKMK4 step of the sample simulations [s]
+  int keep{20};       ///< trajectories kept (at every sub-step time) for plots
+  int threads{0};     ///< 0: hardware concurrency
+};
+
+/// One simulated trajectory at the nominal's sub-step times.
+struct SampleTrajectory {
+  std::vector<double> t;
+  std::vector<Mat3> R;
+  std::vector<Vec3> omega;
+};
+
+struct SoundnessReport {
+  long samples{0};
+  long inside{0};            ///< samples inside their ball at every t_i
+  double max_ratio{0.0};     ///< max over samples and t_i of (upper distance)/r_i
+  double first_violation_time{-1.0};  ///< -1 when none
+  std::vector<SampleTrajectory> kept;
+  double wall_time_s{0.0};
+};
+
+/// Samples `whole` and checks each sample against the cell (of `cells`/`results`, same order)
+/// whose initial set contains it.
+[[nodiscard]] SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
+                                              const std::vector<InitialSet>& cells,
+                                              const std::vector<ReachResult>& results,
+                                              const SoundnessSettings& settings);
+
+}  // namespace attiguard::reach

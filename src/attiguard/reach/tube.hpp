@@ -1,0 +1,60 @@
+#pragma once
+/// @file tube.hpp
+/// Sound per-interval enclosures U_i of the reach tube (Algorithm 1, GetReachTube), around a
+/// nominal trajectory sampled at sub-step boundaries.
+///
+/// Per sub-step [s, s+h]:
+///  1. A priori enclosure (interval Picard–Lindelöf): a box G ⊂ R³ of ω and a bi-invariant ball
+///     of radius ρ_G around R_n(s) such that W_s + [0, h]·X_ω(G) ⊆ G and e_R(s) + h·max_G‖ω‖ ≤ ρ_G.
+///     Then every trajectory starting in the set at s stays in G over [s, s+h].
+///  2. Deviation bounds z = (d_1, d_2, d_3, e_ω, e_R) from the nominal — |ω_k − ω_n,k| ≤ d_k,
+///     ‖ω − ω_n‖ ≤ e_ω, d(R, R_n) ≤ e_R — obey the linear comparison system ż ≤ M z, with M Metzler:
+///       ḋ_k ≤ sup B_kk d_k + Σ_{j≠k} sup|B_kj| d_j + ‖row_k A‖ e_R       (interval Jacobians on G)
+///       ė_ω ≤ μ₂(B) e_ω + ‖A‖ e_R,   ė_R ≤ e_ω + max_G‖ω‖ e_R
+///     (Dini derivatives; the last from the body velocity ω − Eᵀω_n of E = R_nᵀR). Hence
+///     z(s+h) ≤ exp(M h) z(s) (Kamke/Metzler comparison), and sup over the sub-step ≤ exp(M⁺h) z(s)
+///     with M⁺ = M with negative diagonal entries set to 0.
+///  3. The sub-step box: the nominal's "tent" bounds (from ω_n(s), ω_n(s+h) and X_ω(G)) ± the
+///     sup deviation, intersected with G. docs/reach.md gives the proofs.
+
+#include <span>
+#include <vector>
+
+#include "attiguard/reach/closed_loop.hpp"
+
+namespace attiguard::reach {
+
+/// A nominal state at time t.
+struct NominalPoint {
+  double t{0.0};
+  Mat3 R{Mat3::Identity()};
+  Vec3 omega{Vec3::Zero()};
+};
+
+/// z = (d_1, d_2, d_3, e_ω, e_R): deviation bounds from the nominal (see file comment).
+using Deviation = Eigen::Matrix<double, 5, 1>;
+
+/// Sound enclosure of every state over [t0, t1].
+struct TubeSegment {
+  double t0{0.0};
+  double t1{0.0};
+  AttitudeBall attitude;
+  Box3 omega;
+};
+
+struct TubeResult {
+  std::vector<TubeSegment> segments;  ///< one per sub-step
+  Deviation end{Deviation::Zero()};   ///< deviation bounds at the last nominal point
+  Box3 omega_hull;                    ///< hull of the segments' ω boxes
+  AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
+};
+
+/// Propagates `start` (valid at nominal.front()) along the nominal points (≥ 2, increasing t).
+/// Throws NumericalError when no a priori enclosure is found (diverging tube).
+[[nodiscard]] TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
+                                        const Deviation& start);
+
+/// exp(M h) for a small square matrix (scaling and squaring, Taylor degree 18).
+[[nodiscard]] Eigen::MatrixXd expm(const Eigen::MatrixXd& M);
+
+}  // namespace attiguard::reach

@@ -1,0 +1,142 @@
+// Scenario kind `reach` (docs/scenario-format.md, section "reach").
+
+#include "attiguard/scenario/reach_scenario.hpp"
+
+#include <array>
+#include <cmath>
+#include <initializer_list>
+#include <numbers>
+
+#include "attiguard/reach/metrics.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+namespace {
+
+void declare(const TableReader& table, std::initializer_list<std::string_view> keys) {
+  for (const std::string_view key : keys) (void)table.has(key);
+}
+
+std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, std::string& model) {
+  static constexpr std::array<std::string_view, 4> models{"linear_omega", "free", "constant_torque",
+                                                          "pd"};
+  declare(sys, {"model", "matrix", "inertia", "torque_b", "kp", "kd", "reference"});
+  model = sys.string("model", models);
+  if (model == "linear_omega") {
+    return std::make_shared<reach::LinearOmegaLoop>(sys.matrix3("matrix"));
+  }
+  const Eigen::Matrix3d J = sys.inertia("inertia");
+  if (model == "free") return std::make_shared<reach::RigidBodyLoop>(J, Eigen::Vector3d::Zero());
+  if (model == "constant_torque") {
+    return std::make_shared<reach::RigidBodyLoop>(J, sys.vector3("torque_b"));
+  }
+  const double kp = sys.number("kp", NumberRule::positive());
+  const double kd = sys.number("kd", NumberRule::positive());
+  return std::make_shared<reach::PdLoop>(J, kp, kd, sys.rotation("reference"));
+}
+
+}  // namespace
+
+ReachScenario parse_reach(const Document& doc) {
+  ReachScenario sc;
+  const TableReader root(doc);
+  declare(root, {"kind", "name", "description", "system", "initial", "reach", "partition",
+                 "soundness", "safety", "output"});
+  const std::string kind = root.string("kind");
+  if (kind != "reach") root.fail("kind", "expected \"reach\", got \"" + kind + "\"");
+  const std::string stem = doc.path.stem().string();
+  sc.name = root.string_or("name", stem.empty() ? "reach" : stem);
+  if (sc.name.empty()) root.fail("name", "must not be empty");
+  (void)root.string_or("description", "");
+
+  sc.loop = parse_system(root.table("system"), sc.model);
+
+  const TableReader init = root.table("initial");
+  declare(init, {"attitude", "attitude_radius", "omega_b", "omega_radius", "metric_P"});
+  if (init.has("attitude")) sc.initial.R0 = init.rotation("attitude");
+  sc.initial.attitude_radius =
+      init.number("attitude_radius", {0.0, std::numbers::pi, false, true});
+  sc.initial.omega0 = init.vector3("omega_b");
+  sc.initial.omega_radius = init.number("omega_radius", NumberRule::non_negative());
+  if (init.has("metric_P")) {
+    sc.initial.P0 = init.matrix3("metric_P");
+    if (!reach::is_spd(sc.initial.P0)) {
+      init.fail("metric_P", "must be symmetric positive definite (P_0 of Algorithm 1)");
+    }
+  }
+  if (sc.initial.attitude_radius + sc.initial.omega_radius <= 0.0) {
+    init.fail("omega_radius", "attitude_radius and omega_radius must not both be 0");
+  }
+
+  reach::ConReachSettings& s = sc.settings;
+  const TableReader r = root.table("reach");
+  declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
+              "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates"});
+  s.horizon = r.number("horizon", NumberRule::positive());
+  s.steps = static_cast<int>(r.integer("steps", 1, 100000));
+  static constexpr std::array<std::string_view, 2> modes{"line_search", "min_enclosure"};
+  s.mode = r.string_or("rate_mode", "line_search", modes) == "min_enclosure"
+               ? reach::RateMode::min_enclosure
+               : reach::RateMode::line_search;
+  s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
+  s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
+  s.min_diagonal = r.number_or("min_diagonal", 0.01, NumberRule::non_negative());
+  s.substeps = static_cast<int>(r.integer_or("substeps", 10, 1, 10000));
+  s.integrator_step = r.number_or("integrator_step", 1e-3, NumberRule::positive());
+  s.attitude_floor_ratio = r.number_or("attitude_floor_ratio", 0.5, {0.0, 1.0, true, false});
+  s.min_enclosure_candidates =
+      static_cast<int>(r.integer_or("min_enclosure_candidates", 30, 1, 1000));
+  if (s.integrator_step > s.horizon / s.steps / s.substeps) {
+    r.fail(r.has("integrator_step") ? "integrator_step" : "substeps",
+           "integrator_step must not exceed horizon/(steps*substeps)");
+  }
+
+  if (const auto part = root.optional_table("partition")) {
+    declare(*part, {"attitude_cells", "omega_cells", "threads"});
+    sc.attitude_cells = static_cast<int>(part->integer_or("attitude_cells", 1, 1, 50));
+    sc.omega_cells = static_cast<int>(part->integer_or("omega_cells", 1, 1, 50));
+    sc.threads = static_cast<int>(part->integer_or("threads", 0, 0, 256));
+  }
+  if (const auto snd = root.optional_table("soundness")) {
+    declare(*snd, {"samples", "seed", "step"});
+    sc.soundness.samples = snd->integer_or("samples", 10000, 0, 100000000);
+    sc.soundness.seed = static_cast<std::uint64_t>(snd->integer_or("seed", 1, 0, 1L << 62));
+    sc.soundness.step = snd->number_or("step", 0.01, NumberRule::positive());
+  }
+  sc.soundness.threads = sc.threads;
+  if (const auto saf = root.optional_table("safety")) {
+    declare(*saf, {"cones", "omega_abs_max", "omega_norm_max"});
+    if (saf->has("cones")) {
+      static constexpr std::array<std::string_view, 2> types{"keep_out", "keep_in"};
+      int idx = 0;
+      for (const TableReader& c : saf->array_of_tables("cones")) {
+        declare(c, {"name", "type", "axis_b", "direction_i", "half_angle_deg"});
+        reach::PointingCone cone;
+        cone.name = c.string_or("name", "cone" + std::to_string(idx++));
+        cone.keep_out = c.string("type", types) == "keep_out";
+        cone.axis_b = c.direction("axis_b");
+        cone.direction_i = c.direction("direction_i");
+        cone.half_angle = c.number("half_angle_deg", {0.0, 180.0, true, true}) * std::numbers::pi / 180.0;
+        sc.safety.cones.push_back(cone);
+      }
+    }
+    if (saf->has("omega_abs_max")) {
+      const Eigen::Vector3d m = saf->vector3("omega_abs_max");
+      if (!(m.array() > 0.0).all()) saf->fail("omega_abs_max", "every bound must be > 0");
+      sc.safety.omega_abs_max = m;
+    }
+    if (saf->has("omega_norm_max")) {
+      sc.safety.omega_norm_max = saf->number("omega_norm_max", NumberRule::positive());
+    }
+  }
+  if (const auto out = root.optional_table("output")) {
+    declare(*out, {"boundary_points", "plot_trajectories"});
+    sc.boundary_points = static_cast<int>(out->integer_or("boundary_points", 200, 0, 100000));
+    sc.soundness.keep = static_cast<int>(out->integer_or("plot_trajectories", 20, 0, 10000));
+  }
+  root.finish();
+  return sc;
+}
+
+}  // namespace attiguard::scenario

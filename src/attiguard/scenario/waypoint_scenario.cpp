@@ -1,0 +1,172 @@
+// Scenario kind `waypoint` (docs/scenario-format.md, section "waypoint").
+
+#include "attiguard/scenario/waypoint_scenario.hpp"
+
+#include <array>
+#include <cmath>
+#include <initializer_list>
+
+#include "attiguard/scenario/messages.hpp"
+#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+namespace {
+
+void declare(const TableReader& table, std::initializer_list<std::string_view> keys) {
+  for (const std::string_view key : keys) {
+    (void)table.has(key);
+  }
+}
+
+std::string num(double x) { return detail::format_number(x); }
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+double minimum_mission_time(const WaypointScenario& sc) noexcept {
+  const double a_max = sc.mission.T_max / sc.mission.mass;
+  double t = 0.0;
+  lie::Vec3 from = sc.p0_i;
+  for (const lie::Vec3& wp : sc.waypoints_i) {
+    t += 2.0 * std::sqrt((wp - from).norm() / a_max);
+    from = wp;
+  }
+  return t;
+}
+
+WaypointScenario parse_waypoint(const Document& doc) {
+  WaypointScenario sc;
+  guidance::MissionParams& mp = sc.mission;
+  const TableReader root(doc);
+  declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
+                 "attitude_control", "fine_position", "guidance", "simulation"});
+  const std::string kind = root.string("kind");
+  if (kind != "waypoint") {
+    root.fail("kind", "expected \"waypoint\", got " + detail::quoted(kind, '"'));
+  }
+  const std::string stem = doc.path.stem().string();
+  sc.name = root.string_or("name", stem.empty() ? "scenario" : stem);
+  if (sc.name.empty()) {
+    root.fail("name", "must not be empty");
+  }
+  (void)root.string_or("description", "");
+
+  const TableReader craft = root.table("spacecraft");
+  declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque"});
+  mp.mass = craft.number("mass", NumberRule::positive());
+  sc.J = craft.inertia("inertia");
+  mp.T_max = craft.number("main_thrust", NumberRule::positive());
+  mp.f_max = craft.number("rct_thrust", NumberRule::positive());
+  sc.max_wheel_torque = craft.number_or("max_wheel_torque", 0.0, NumberRule::non_negative());
+
+  if (const auto initial = root.optional_table("initial")) {
+    declare(*initial, {"position", "velocity", "attitude", "omega_b"});
+    if (initial->has("position")) sc.p0_i = initial->vector3("position");
+    if (initial->has("velocity")) sc.v0_i = initial->vector3("velocity");
+    if (initial->has("attitude")) sc.R0_ib = initial->rotation("attitude");
+    if (initial->has("omega_b")) sc.omega0_b = initial->vector3("omega_b");
+  }
+
+  const std::vector<TableReader> wps = root.array_of_tables("waypoints");
+  for (const TableReader& w : wps) {
+    declare(w, {"position"});
+    sc.waypoints_i.push_back(w.vector3("position"));
+  }
+
+  const TableReader att = root.table("attitude_control");
+  declare(att, {"kp", "ki", "kd", "integral_zone"});
+  sc.gains.kp = att.number("kp", NumberRule::positive());
+  sc.gains.ki = att.number_or("ki", 0.0, NumberRule::non_negative());
+  sc.gains.kd = att.number("kd", NumberRule::positive());
+  sc.gains.integral_zone = att.number_or("integral_zone", 0.0, NumberRule::non_negative());
+
+  const TableReader fine = root.table("fine_position");
+  declare(fine, {"kappa_p", "kappa_d", "on_threshold"});
+  mp.rct.kappa_p = fine.number_or("kappa_p", 0.0, NumberRule::non_negative());
+  mp.rct.kappa_d = fine.number("kappa_d", NumberRule::positive());
+  mp.rct_threshold = fine.number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
+
+  const TableReader g = root.table("guidance");
+  declare(g, {"cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
+              "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
+              "main_cutoff_speed", "replan_distance",
+              "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
+              "flip_timing", "flip_lead_time"});
+  mp.cruise_speed = g.number("cruise_speed", NumberRule::positive());
+  mp.acceleration_fraction =
+      g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
+  mp.pointing_tolerance = g.number_or("pointing_tolerance", 1e-6, {0.0, 1.0, true, true});
+  static constexpr std::array<std::string_view, 2> metrics{"quaternion", "thrust_axis"};
+  mp.pointing_thrust_axis = g.string_or("pointing_error", "quaternion", metrics) == "thrust_axis";
+  mp.arrival_radius = g.number("arrival_radius", NumberRule::positive());
+  mp.position_accuracy = g.number("position_accuracy", NumberRule::positive());
+  mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
+  mp.braking_margin = g.number_or("braking_margin", 1.0, {0.0, 1.0, true, false});
+  static constexpr std::array<std::string_view, 2> distances{"along_velocity", "norm"};
+  mp.brake_along_velocity =
+      g.string_or("braking_distance", "along_velocity", distances) == "along_velocity";
+  mp.main_cutoff_speed = g.number_or("main_cutoff_speed", 0.02, NumberRule::non_negative());
+  mp.replan_distance = g.number_or("replan_distance", 50.0, NumberRule::positive());
+  mp.velocity_projection = g.boolean_or("velocity_projection", true);
+  mp.projection.blend_speed = g.number_or("projection_blend_speed", 0.05, NumberRule::positive());
+  const double full_deg =
+      g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
+  mp.projection.cos_full = std::cos(full_deg * kPi / 180.0);
+  static constexpr std::array<std::string_view, 2> timings{"immediate", "braking_point"};
+  mp.flip_timing = g.string_or("flip_timing", "immediate", timings) == "braking_point"
+                       ? guidance::FlipTiming::braking_point
+                       : guidance::FlipTiming::immediate;
+  mp.flip_lead_time = g.number_or("flip_lead_time", 60.0, NumberRule::non_negative());
+  if (mp.replan_distance <= mp.arrival_radius) {
+    g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",
+           "replan_distance (" + num(mp.replan_distance) + ") must exceed arrival_radius (" +
+               num(mp.arrival_radius) + ")");
+  }
+  if (mp.rct.kappa_p > 0.0 && mp.position_accuracy >= mp.replan_distance) {
+    g.fail("position_accuracy", "must be < replan_distance (" + num(mp.replan_distance) + ")");
+  }
+  if (mp.main_cutoff_speed >= mp.cruise_speed) {
+    g.fail("main_cutoff_speed", "must be < cruise_speed (" + num(mp.cruise_speed) + ")");
+  }
+
+  const TableReader sim = root.table("simulation");
+  declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
+                "rel_tol", "max_step"});
+  sc.duration = sim.number("duration", NumberRule::positive());
+  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
+  sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
+  sc.integrator = parse_integrator_settings(sim);
+  if (sc.control_period > sc.duration) {
+    sim.fail("control_period", "must be <= duration (" + num(sc.duration) + ")");
+  }
+  if (sc.output_interval < sc.control_period) {
+    sim.fail("output_interval",
+             "must be >= control_period (" + num(sc.control_period) + "): rows are logged at "
+             "control samples");
+  }
+  if (sc.duration / sc.control_period > 1e8) {
+    sim.fail("control_period", "too small for the duration (more than 1e8 control samples)");
+  }
+  root.finish();
+
+  // Reachability: every waypoint needs at least the bang-bang time of its leg.
+  const double a_max = mp.T_max / mp.mass;
+  double t_min = 0.0;
+  lie::Vec3 from = sc.p0_i;
+  for (std::size_t k = 0; k < sc.waypoints_i.size(); ++k) {
+    t_min += 2.0 * std::sqrt((sc.waypoints_i[k] - from).norm() / a_max);
+    from = sc.waypoints_i[k];
+    if (t_min > sc.duration) {
+      wps[k].fail("position",
+                  "waypoint " + std::to_string(k) + " is unreachable within simulation.duration (" +
+                      num(sc.duration) + " s): even bang-bang at T_max/m = " + num(a_max) +
+                      " m/s^2 needs " + num(t_min) + " s to get there");
+    }
+  }
+  return sc;
+}
+
+}  // namespace attiguard::scenario

@@ -1,0 +1,289 @@
+#include "attiguard/sim/pet_erg_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "attiguard/integrate/integrator.hpp"
+#include "attiguard/io/csv_writer.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/sim/time_grid.hpp"
+
+namespace attiguard::sim {
+
+namespace {
+
+using governor::GovernorMode;
+using governor::GovernorOutput;
+using lie::Mat3;
+using lie::Vec3;
+
+/// A stop of the integrator and what happens there.
+struct Stop {
+  double t{0.0};
+  bool sample{false};  ///< a sampling instant t_k of (5)
+  bool output{false};  ///< an output row
+};
+
+/// Sampling instants k·T_s in (0, duration), output instants, and schedule waypoints in
+/// (0, duration), merged (instants closer than 1e-9·min(T_s, output_interval) are one stop).
+std::vector<Stop> stop_plan(const scenario::PetErgScenario& sc) {
+  std::vector<Stop> stops;
+  for (double t : uniform_instants(sc.duration, sc.output_interval)) {
+    stops.push_back({t, false, true});
+  }
+  if (sc.params.mode == GovernorMode::pet) {
+    for (long k = 1;; ++k) {
+      const double t = static_cast<double>(k) * sc.params.Ts;
+      if (t >= sc.duration - 1e-9 * sc.params.Ts) {
+        break;
+      }
+      stops.push_back({t, true, false});
+    }
+  }
+  for (int i = 0; i < sc.desired.size(); ++i) {
+    const double t = sc.desired[i].t;
+    if (t > 0.0 && t < sc.duration) {
+      stops.push_back({t, false, false});
+    }
+  }
+  std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
+  const double merge = 1e-9 * std::min(sc.params.Ts, sc.output_interval);
+  std::vector<Stop> merged;
+  for (const Stop& s : stops) {
+    if (!merged.empty() && s.t - merged.back().t <= merge) {
+      Stop& m = merged.back();
+      m.sample = m.sample || s.sample;
+      m.output = m.output || s.output;
+      // Keep the exact multiple k·T_s (or the duration) as the stop time.
+      if (s.sample || (s.output && !m.sample)) {
+        m.t = s.t;
+      }
+      continue;
+    }
+    merged.push_back(s);
+  }
+  return merged;
+}
+
+}  // namespace
+
+PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
+                              const PetErgRowObserver& on_output) {
+  const governor::AttitudeGovernor gov(sc.params, sc.cones);
+  const Mat3 J_inv = sc.params.J.inverse();
+  const Mat3& J = sc.params.J;
+  const int n_cones = static_cast<int>(sc.cones.size());
+
+  PetErgResult r;
+  r.gamma_d = gov.gamma_d();
+  r.gamma_d_upper = gov.torque_threshold().upper_bound;
+  r.gamma_d_loose = gov.gamma_d_loose();
+  r.gamma_g_initial = gov.gamma_g(sc.R_g0);
+  r.gamma_initial = gov.gamma(sc.R_g0);
+  r.V_initial = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
+  r.min_pointing_margin = std::numeric_limits<double>::infinity();
+  r.min_margin_per_cone.assign(sc.cones.size(), std::numeric_limits<double>::infinity());
+  r.max_V_minus_Gamma = -std::numeric_limits<double>::infinity();
+
+  PetErgState y;
+  y.R[0] = sc.R0_ib;
+  y.R[1] = sc.R_g0;
+  y.x = sc.omega0_b;
+  bool flag = sc.params.mode == GovernorMode::continuous;
+
+  auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
+    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag);
+    PetErgState::Tangent d;
+    d.segment<3>(0) = s.x;
+    d.segment<3>(3) = out.xi_g;
+    d.segment<3>(6) = J_inv * ((J * s.x).cross(s.x) + out.tau_b);
+    return d;
+  };
+  auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
+    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag);
+    r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
+    r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
+    for (int i = 0; i < n_cones; ++i) {
+      const double m = out.margins[static_cast<std::size_t>(i)];
+      auto& mi = r.min_margin_per_cone[static_cast<std::size_t>(i)];
+      mi = std::min(mi, m);
+      r.min_pointing_margin = std::min(r.min_pointing_margin, m);
+      if (m < 0.0 && r.first_pointing_violation_time < 0.0) {
+        r.first_pointing_violation_time = t;
+      }
+    }
+    return out;
+  };
+  auto sample = [&](const PetErgState& s) {
+    if (sc.params.mode == GovernorMode::pet) {
+      flag = gov.trigger_condition(s.R[0], s.x, s.R[1]);
+      ++r.samples;
+      r.samples_updating += flag ? 1 : 0;
+    }
+  };
+
+  // t = 0 is the first sampling instant t_0.
+  sample(y);
+  {
+    const GovernorOutput out0 = monitor(0.0, y);
+    if (on_output) {
+      on_output(0.0, y, sc.desired.at(0.0), out0);
+    }
+  }
+
+  const std::vector<Stop> plan = stop_plan(sc);
+  std::vector<double> times;
+  times.reserve(plan.size());
+  for (const Stop& s : plan) {
+    times.push_back(s.t);
+  }
+  std::size_t next = 0;
+  auto on_stop = [&](double t, PetErgState& s) {
+    const Stop& stop = plan[next++];
+    if (stop.sample) {
+      sample(s);
+    }
+    const GovernorOutput out = monitor(t, s);
+    if (stop.output && on_output) {
+      on_output(t, s, sc.desired.at(t), out);
+    }
+    return true;
+  };
+  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
+  const integrate::IntegrationStats stats =
+      integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
+
+  const Mat3 R_d_end = sc.desired.at(sc.duration);
+  const Mat3 R_g_end = sc.params.mode == GovernorMode::none ? R_d_end : y.R[1];
+  r.final_attitude_error = std::max(0.0, lie::phi(R_d_end.transpose() * y.R[0]));
+  r.final_reference_error = std::max(0.0, lie::phi(R_d_end.transpose() * R_g_end));
+  r.final_omega_norm = y.x.norm();
+  r.steps = stats.accepted_steps;
+  r.rejected_steps = stats.rejected_steps;
+  r.evaluations = stats.evaluations;
+  return r;
+}
+
+namespace {
+
+nlohmann::json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1), v(2)}); }
+
+}  // namespace
+
+nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc, const PetErgResult& r,
+                               double wall_time_s) {
+  nlohmann::json j;
+  j["kind"] = "pet_erg";
+  j["name"] = sc.name;
+  j["governor"] = scenario::governor_mode_name(sc.params.mode);
+  j["integrator"] = sc.integrator.method == integrate::Method::rkmk4 ? "rkmk4" : "rkmk_dp54";
+  j["duration"] = sc.duration;
+  j["kp"] = sc.params.gains.kp;
+  j["kd"] = sc.params.gains.kd;
+  j["tau_max"] = sc.params.tau_max;
+  j["kappa"] = sc.params.kappa;
+  j["c_gamma"] = sc.params.c_gamma;
+  j["sampling_period"] = sc.params.Ts;
+  j["epsilon"] = sc.params.epsilon;
+  j["epsilon_gamma"] = sc.params.epsilon_gamma;
+  j["gamma_d"] = r.gamma_d;
+  j["gamma_d_upper_bound"] = r.gamma_d_upper;
+  j["gamma_d_loose"] = r.gamma_d_loose;
+  j["gamma_cap"] = sc.params.gains.kp * (2.0 - sc.params.epsilon_gamma);
+  j["gamma_g_initial"] = finite_or_null(r.gamma_g_initial);
+  j["gamma_initial"] = r.gamma_initial;
+  j["V_initial"] = r.V_initial;
+  j["max_torque_norm"] = r.max_torque_norm;
+  const bool torque_ok = r.max_torque_norm <= sc.params.tau_max;
+  j["torque_limit_satisfied"] = torque_ok;
+  j["min_pointing_margin"] = finite_or_null(r.min_pointing_margin);
+  nlohmann::json per_cone = nlohmann::json::array();
+  for (double m : r.min_margin_per_cone) {
+    per_cone.push_back(finite_or_null(m));
+  }
+  j["min_pointing_margin_per_cone"] = per_cone;
+  const bool pointing_ok = !(r.min_pointing_margin < 0.0);
+  j["pointing_constraints_satisfied"] = pointing_ok;
+  j["first_pointing_violation_time"] =
+      r.first_pointing_violation_time >= 0.0 ? nlohmann::json(r.first_pointing_violation_time)
+                                             : nlohmann::json(nullptr);
+  j["constraints_satisfied"] = torque_ok && pointing_ok;
+  j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
+  j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
+  j["final_attitude_error"] = r.final_attitude_error;
+  j["final_reference_error"] = r.final_reference_error;
+  j["final_omega_norm"] = r.final_omega_norm;
+  j["samples"] = r.samples;
+  j["samples_updating"] = r.samples_updating;
+  j["steps"] = r.steps;
+  j["rejected_steps"] = r.rejected_steps;
+  j["evaluations"] = r.evaluations;
+  nlohmann::json cones = nlohmann::json::array();
+  for (const governor::ConeConstraint& c : sc.cones) {
+    cones.push_back({{"axis_b", vec_json(c.axis_b)},
+                     {"direction_i", vec_json(c.direction_i)},
+                     {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi},
+                     {"cos_theta_c", c.cos_theta_c},
+                     {"delta", c.delta},
+                     {"zeta", c.zeta},
+                     {"repulsive_gain", c.repulsive_gain}});
+  }
+  j["cones"] = cones;
+  j["wall_time_s"] = wall_time_s;
+  return j;
+}
+
+nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesystem::path& out_dir) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  io::ensure_directory(out_dir);
+  std::vector<std::string> columns{
+      "t",       "q_w",     "q_x",     "q_y",      "q_z",     "omega_x", "omega_y", "omega_z",
+      "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w",    "qg_x",    "qg_y",    "qg_z",
+      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "V",       "gamma_d", "gamma_g", "gamma",
+      "trigger", "attitude_error", "reference_error"};
+  const std::size_t fixed = columns.size();
+  for (std::size_t i = 0; i < sc.cones.size(); ++i) {
+    columns.push_back("margin_" + std::to_string(i));
+  }
+  io::CsvWriter csv(out_dir / "trajectory.csv", columns);
+  std::vector<double> row(columns.size());
+  const PetErgRowObserver write_row = [&](double t, const PetErgState& y, const Mat3& R_d,
+                                          const GovernorOutput& out) {
+    const lie::Quat q = lie::rotation_to_quat(y.R[0]);
+    const lie::Quat qg = lie::rotation_to_quat(out.R_g);
+    const lie::Quat qd = lie::rotation_to_quat(R_d);
+    const double values[] = {t,
+                             q(0), q(1), q(2), q(3),
+                             y.x(0), y.x(1), y.x(2),
+                             out.tau_b(0), out.tau_b(1), out.tau_b(2), out.tau_b.norm(),
+                             qg(0), qg(1), qg(2), qg(3),
+                             qd(0), qd(1), qd(2), qd(3),
+                             out.V, out.gamma_d, out.gamma_g, out.gamma,
+                             out.trigger ? 1.0 : 0.0,
+                             lie::phi(R_d.transpose() * y.R[0]),
+                             lie::phi(R_d.transpose() * out.R_g)};
+    std::copy(std::begin(values), std::end(values), row.begin());
+    for (int i = 0; i < out.cone_count; ++i) {
+      row[fixed + static_cast<std::size_t>(i)] = out.margins[static_cast<std::size_t>(i)];
+    }
+    csv.row(row);
+  };
+  const PetErgResult result = simulate_pet_erg(sc, write_row);
+  csv.close();
+  nlohmann::json summary = pet_erg_summary(
+      sc, result, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
+  summary["output_rows"] = csv.rows();
+  io::write_json(out_dir / "summary.json", summary);
+  return summary;
+}
+
+}  // namespace attiguard::sim

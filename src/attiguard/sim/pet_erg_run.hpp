@@ -1,0 +1,65 @@
+#pragma once
+/// @file pet_erg_run.hpp
+/// Simulation of the `pet_erg` scenario kind: the rigid body (1) under the PD law (3) with the
+/// PET-ERG (5)-(6), the continuous ERG (4), or no governor (PET-ERG paper). The state
+/// (R, R_g, ω) ∈ SO(3)² × R³ is integrated with the RKMK integrators, which stop exactly at every
+/// sampling instant t_k = k·T_s where the trigger (5) is evaluated and then held.
+
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/integrate/product_state.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+
+namespace attiguard::sim {
+
+/// (R_ib, R_g, ω_b): R[0] the attitude, R[1] the auxiliary reference, x the body rate.
+using PetErgState = integrate::ProductState<2, 3>;
+
+/// Called at t = 0 and at every output instant with the state, R_d(t) and the governor's view.
+using PetErgRowObserver = std::function<void(double t, const PetErgState& y, const lie::Mat3& R_d,
+                                             const governor::GovernorOutput& out)>;
+
+/// Figures of one simulation (every "max"/"min" is over t = 0, every accepted integrator step
+/// and every stop instant).
+struct PetErgResult {
+  double gamma_d{0.0};           ///< Γ_d (certified lower bound)
+  double gamma_d_upper{0.0};     ///< attained value bracketing the exact Γ_d from above
+  double gamma_d_loose{0.0};     ///< closed-form bound on Γ_d
+  double gamma_g_initial{0.0};   ///< Γ_g(R_g(0)) (+∞ without cones)
+  double gamma_initial{0.0};     ///< Γ(R_g(0))
+  double V_initial{0.0};         ///< V(R_0, ω_0, R_g(0))
+  double max_torque_norm{0.0};
+  double min_pointing_margin{0.0};  ///< min over time and cones of a_cᵀ R a_b − cos θ_c (+∞: none)
+  std::vector<double> min_margin_per_cone;
+  double first_pointing_violation_time{-1.0};  ///< first step with a margin < 0, −1 if none
+  double max_V_minus_Gamma{0.0};  ///< max of V − Γ(R_g) (R_g = R_d in mode none)
+  double final_attitude_error{0.0};   ///< φ(R_dᵀR) at the end
+  double final_reference_error{0.0};  ///< φ(R_dᵀR_g) at the end
+  double final_omega_norm{0.0};
+  long samples{0};           ///< sampling instants at which (5) was evaluated (mode pet)
+  long samples_updating{0};  ///< of which the condition held
+  long steps{0};
+  long rejected_steps{0};
+  long evaluations{0};
+};
+
+/// Simulates (1) under (3) with the update (4), (5)-(6) or none (PET-ERG paper) without any
+/// file output; `on_output` (optional) receives t = 0 and every
+/// output instant. Throws NumericalError on divergence.
+[[nodiscard]] PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
+                                            const PetErgRowObserver& on_output = {});
+
+/// The summary.json object of a PET-ERG run (PET-ERG paper, Sec. V figures; keys: docs/scenario-format.md, section "pet_erg").
+[[nodiscard]] nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc,
+                                             const PetErgResult& result, double wall_time_s);
+
+/// Runs the scenario (PET-ERG paper, Sec. V), writes out_dir/trajectory.csv and out_dir/summary.json, returns the
+/// summary. Throws NumericalError on divergence, InputError when the files cannot be written.
+nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesystem::path& out_dir);
+
+}  // namespace attiguard::sim

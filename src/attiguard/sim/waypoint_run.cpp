@@ -1,0 +1,238 @@
+#include "attiguard/sim/waypoint_run.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include "attiguard/integrate/integrator.hpp"
+#include "attiguard/io/csv_writer.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/lie/quaternion.hpp"
+
+namespace attiguard::sim {
+
+namespace {
+
+using dynamics::SpacecraftState;
+using lie::Vec3;
+
+bool command_finite(const guidance::MissionCommand& c) noexcept {
+  return c.inputs.tau_b.allFinite() && std::isfinite(c.inputs.thrust) &&
+         c.inputs.f_rct_b.allFinite() && c.q_id.allFinite() && c.omega_d_d.allFinite();
+}
+
+}  // namespace
+
+WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
+                                    const SampleObserver& observer) {
+  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque);
+  guidance::Mission mission(sc.mission, sc.gains, sc.waypoints_i);
+  WaypointSimResult res;
+  const int n_wp = static_cast<int>(sc.waypoints_i.size());
+  res.waypoints.resize(static_cast<std::size_t>(n_wp));
+  for (int k = 0; k < n_wp; ++k) {
+    res.waypoints[static_cast<std::size_t>(k)].index = k;
+  }
+
+  SpacecraftState y;
+  y.R[0] = sc.R0_ib;
+  y.x.segment<3>(0) = sc.omega0_b;
+  y.x.segment<3>(3) = sc.p0_i;
+  y.x.segment<3>(6) = sc.v0_i;
+
+  const double Ts = sc.control_period;
+  const auto n_samples = static_cast<long>(std::ceil(sc.duration / Ts - 1e-9));
+  std::vector<double> stops;
+  stops.reserve(static_cast<std::size_t>(n_samples));
+  for (long k = 1; k <= n_samples; ++k) {
+    stops.push_back(std::min(static_cast<double>(k) * Ts, sc.duration));
+  }
+
+  guidance::MissionCommand cmd;
+  double t_prev = 0.0;
+  auto sample = [&](double t, const SpacecraftState& s) {
+    // Account the held command over [t_prev, t] to the waypoint it served.
+    const double dt = t - t_prev;
+    if (dt > 0.0 && cmd.waypoint < n_wp) {
+      WaypointResult& w = res.waypoints[static_cast<std::size_t>(cmd.waypoint)];
+      w.delta_v_main += cmd.inputs.thrust * dt / sc.mission.mass;
+      w.delta_v_rct += cmd.rct.sum() * dt / sc.mission.mass;
+    }
+    t_prev = t;
+    guidance::MissionInputs in;
+    in.R_ib = s.R[0];
+    in.omega_b = dynamics::omega_b_of(s);
+    in.p_i = dynamics::p_i_of(s);
+    in.v_i = dynamics::v_i_of(s);
+    in.dt = Ts;
+    const int wp_before = mission.waypoint();
+    cmd = mission.step(in);
+    ++res.samples;
+    res.finite = res.finite && command_finite(cmd) && s.all_finite();
+    res.max_torque_norm = std::max(res.max_torque_norm, plant.applied_torque(cmd.inputs.tau_b).norm());
+    if (wp_before < n_wp) {
+      WaypointResult& w = res.waypoints[static_cast<std::size_t>(wp_before)];
+      w.peak_speed = std::max(w.peak_speed, in.v_i.norm());
+      if (cmd.transition && cmd.reason == guidance::TransitionReason::accuracy_met) {
+        w.reached = true;
+        w.arrival_time = t;
+        w.final_position_error = (sc.waypoints_i[static_cast<std::size_t>(wp_before)] - in.p_i).norm();
+        w.final_speed = in.v_i.norm();
+      }
+    }
+    if (cmd.transition) {
+      res.transitions.push_back({t, wp_before, cmd.from, cmd.mode, cmd.reason});
+    }
+    if (observer) {
+      observer(t, s, cmd);
+    }
+    res.total_time = t;
+    return !mission.done();
+  };
+
+  const bool go_on = sample(0.0, y);
+  auto field = [&](double, const SpacecraftState& s) { return plant.derivative(s, cmd.inputs); };
+  auto on_stop = [&](double t, SpacecraftState& s) { return sample(t, s); };
+  auto on_step = [](double, const SpacecraftState&) {};
+  if (go_on && !stops.empty()) {
+    const integrate::IntegrationStats stats = integrate::integrate(
+        field, y, 0.0, std::span<const double>(stops), sc.integrator, on_stop, on_step);
+    res.steps = stats.accepted_steps;
+  }
+  // Waypoints not reached: their errors at the end of the run.
+  for (WaypointResult& w : res.waypoints) {
+    if (!w.reached) {
+      w.final_position_error =
+          (sc.waypoints_i[static_cast<std::size_t>(w.index)] - dynamics::p_i_of(y)).norm();
+      w.final_speed = dynamics::v_i_of(y).norm();
+    }
+  }
+  res.completed = mission.done();
+  return res;
+}
+
+nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
+                            const std::filesystem::path& out_dir) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  io::ensure_directory(out_dir);
+  io::CsvWriter csv(out_dir / "trajectory.csv",
+                    {"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
+                     "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "thrust", "rct_1",
+                     "rct_2", "rct_3", "rct_4", "rct_5", "rct_6", "mode", "waypoint"});
+  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque);
+  const auto every = std::max(1L, std::lround(sc.output_interval / sc.control_period));
+  long k = 0;
+  std::array<double, 26> last_row{};
+  bool last_written = false;
+  auto observer = [&](double t, const dynamics::SpacecraftState& s,
+                      const guidance::MissionCommand& c) {
+    const lie::Quat& q = c.q_ib;  // continuous sign, as integrating (4)
+    const Vec3 w = dynamics::omega_b_of(s);
+    const Vec3 p = dynamics::p_i_of(s);
+    const Vec3 v = dynamics::v_i_of(s);
+    const Vec3 tau = plant.applied_torque(c.inputs.tau_b);
+    last_row = {t,      p(0),     p(1),     p(2),     v(0),     v(1),     v(2),
+                q(0),   q(1),     q(2),     q(3),     w(0),     w(1),     w(2),
+                tau(0), tau(1),   tau(2),   c.inputs.thrust,    c.rct(0), c.rct(1),
+                c.rct(2), c.rct(3), c.rct(4), c.rct(5), static_cast<double>(static_cast<int>(c.mode)),
+                static_cast<double>(c.waypoint)};
+    last_written = (k % every == 0) || c.transition;
+    if (last_written) {
+      csv.row(last_row);
+    }
+    ++k;
+  };
+  const WaypointSimResult res = simulate_waypoint(sc, observer);
+  if (!last_written) {
+    csv.row(last_row);
+  }
+  csv.close();
+  if (!res.finite) {
+    throw NumericalError("waypoint: non-finite state or command during the run");
+  }
+
+  nlohmann::json summary;
+  summary["kind"] = "waypoint";
+  summary["name"] = sc.name;
+  nlohmann::json wps = nlohmann::json::array();
+  nlohmann::json legs = nlohmann::json::array();
+  double total_dv = 0.0;
+  for (const WaypointResult& w : res.waypoints) {
+    nlohmann::json j;
+    j["index"] = w.index;
+    j["arrival_time"] = w.reached ? nlohmann::json(w.arrival_time) : nlohmann::json(nullptr);
+    j["final_position_error"] = w.final_position_error;
+    j["final_speed"] = w.final_speed;
+    j["delta_v"] = w.delta_v();
+    wps.push_back(j);
+    nlohmann::json l;
+    const lie::Vec3& p = sc.waypoints_i[static_cast<std::size_t>(w.index)];
+    l["index"] = w.index;
+    l["position"] = {p(0), p(1), p(2)};
+    l["reached"] = w.reached;
+    l["peak_speed"] = w.peak_speed;
+    l["delta_v_main"] = w.delta_v_main;
+    l["delta_v_rct"] = w.delta_v_rct;
+    l["ideal_delta_v"] = 2.0 * w.peak_speed;  // bang-coast-bang with the same peak speed
+    legs.push_back(l);
+    total_dv += w.delta_v();
+  }
+  summary["waypoints"] = wps;
+  summary["legs"] = legs;
+  summary["completed"] = res.completed;
+  summary["total_time"] = res.total_time;
+  summary["total_delta_v"] = total_dv;
+  summary["max_torque_norm"] = res.max_torque_norm;
+  summary["steps"] = res.steps;
+  summary["samples"] = res.samples;
+  nlohmann::json tr = nlohmann::json::array();
+  for (const TransitionRecord& r : res.transitions) {
+    tr.push_back({{"t", r.t}, {"waypoint", r.waypoint}, {"from", guidance::mode_name(r.from)},
+                  {"to", guidance::mode_name(r.to)}, {"reason", guidance::reason_name(r.reason)}});
+  }
+  summary["transitions"] = tr;
+  nlohmann::json modes = nlohmann::json::array();
+  for (int m = 0; m <= static_cast<int>(guidance::Mode::done); ++m) {
+    modes.push_back(guidance::mode_name(static_cast<guidance::Mode>(m)));
+  }
+  summary["mode_names"] = modes;
+  const guidance::MissionParams& mp = sc.mission;
+  summary["parameters"] = {
+      {"mass", mp.mass},
+      {"main_thrust", mp.T_max},
+      {"rct_thrust", mp.f_max},
+      {"max_wheel_torque", sc.max_wheel_torque},
+      {"kp", sc.gains.kp},
+      {"ki", sc.gains.ki},
+      {"kd", sc.gains.kd},
+      {"integral_zone", sc.gains.integral_zone},
+      {"kappa_p", mp.rct.kappa_p},
+      {"kappa_d", mp.rct.kappa_d},
+      {"on_threshold", mp.rct_threshold},
+      {"cruise_speed", mp.cruise_speed},
+      {"acceleration_fraction", mp.acceleration_fraction},
+      {"pointing_tolerance", mp.pointing_tolerance},
+      {"pointing_error", mp.pointing_thrust_axis ? "thrust_axis" : "quaternion"},
+      {"arrival_radius", mp.arrival_radius},
+      {"position_accuracy", mp.position_accuracy},
+      {"speed_accuracy", mp.speed_accuracy},
+      {"braking_margin", mp.braking_margin},
+      {"braking_distance", mp.brake_along_velocity ? "along_velocity" : "norm"},
+      {"main_cutoff_speed", mp.main_cutoff_speed},
+      {"replan_distance", mp.replan_distance},
+      {"velocity_projection", mp.velocity_projection},
+      {"projection_blend_speed", mp.projection.blend_speed},
+      {"flip_timing", mp.flip_timing == guidance::FlipTiming::immediate ? "immediate" : "braking_point"},
+      {"flip_lead_time", mp.flip_lead_time},
+      {"control_period", sc.control_period},
+      {"integrator", sc.integrator.method == integrate::Method::rkmk4 ? "rkmk4" : "rkmk_dp54"},
+      {"step", sc.integrator.step},
+      {"duration", sc.duration}};
+  summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  io::write_json(out_dir / "summary.json", summary);
+  return summary;
+}
+
+}  // namespace attiguard::sim

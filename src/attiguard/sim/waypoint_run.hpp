@@ -1,0 +1,69 @@
+#pragma once
+/// @file waypoint_run.hpp
+/// Simulation of the `waypoint` scenario kind (waypoint paper, Sec. VI): the plant (2)-(5) on
+/// SO(3) × R⁹ with the RKMK integrators, the mission state machine and its controllers sampled
+/// every control period with zero-order hold of every command (main thruster, RCT, torque).
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/dynamics/spacecraft_plant.hpp"
+#include "attiguard/guidance/mission.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
+
+namespace attiguard::sim {
+
+/// Result for one waypoint (summary.json `waypoints[k]` and `legs[k]`).
+struct WaypointResult {
+  int index{0};
+  bool reached{false};
+  double arrival_time{0.0};           ///< time of the accuracy_met transition [s]
+  double final_position_error{0.0};   ///< ‖e‖ then (or at the end of the run) [m]
+  double final_speed{0.0};            ///< ‖v‖ then [m/s]
+  double delta_v_main{0.0};           ///< ∫T/m over the leg [m/s]
+  double delta_v_rct{0.0};            ///< ∫Σ f_j/m over the leg [m/s]
+  double peak_speed{0.0};             ///< max ‖v‖ over the leg [m/s]
+  [[nodiscard]] double delta_v() const noexcept { return delta_v_main + delta_v_rct; }
+};
+
+/// One logged mode transition.
+struct TransitionRecord {
+  double t{0.0};
+  int waypoint{0};
+  guidance::Mode from{guidance::Mode::align};
+  guidance::Mode to{guidance::Mode::align};
+  guidance::TransitionReason reason{guidance::TransitionReason::none};
+};
+
+/// Result of a simulation.
+struct WaypointSimResult {
+  std::vector<WaypointResult> waypoints;
+  std::vector<TransitionRecord> transitions;
+  bool completed{false};       ///< every waypoint reached within the duration
+  double total_time{0.0};      ///< time at the end of the run [s]
+  double max_torque_norm{0.0};  ///< max ‖τ_b‖ applied [N·m]
+  long steps{0};               ///< accepted integrator steps
+  long samples{0};             ///< controller samples
+  bool finite{true};           ///< every state and command finite
+};
+
+/// Called at every control sample with the state and the command computed there.
+using SampleObserver =
+    std::function<void(double t, const dynamics::SpacecraftState& y, const guidance::MissionCommand& cmd)>;
+
+/// Simulates the scenario; stops when the mission is done or at the duration. Throws
+/// NumericalError on divergence of the integrator.
+[[nodiscard]] WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
+                                                  const SampleObserver& observer = {});
+
+/// Runs the scenario, writes out_dir/trajectory.csv (t, p_x..p_z, v_x..v_z, q_w..q_z,
+/// omega_x..omega_z, tau_x..tau_z, thrust, rct_1..rct_6, mode, waypoint) and
+/// out_dir/summary.json, and returns the summary.
+nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
+                            const std::filesystem::path& out_dir);
+
+}  // namespace attiguard::sim

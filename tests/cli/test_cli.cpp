@@ -1,0 +1,198 @@
+/// End-to-end tests of the `attiguard` program, independent of any scenario kind: exit codes, the
+/// one-line error contract and the graceful degradation of `--plot` (docs/conventions.md,
+/// "Exit codes"). Kind-specific runs are in test_cli_rigid_body.cpp.
+#ifdef ATTIGUARD_CLI_PATH
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "attiguard/core/version.hpp"
+#include "attiguard/scenario/kinds.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliResult {
+  int exit_code{-1};
+  std::string out;
+  std::string err;
+};
+
+/// A fresh scratch directory per test (tests run in parallel processes under ctest).
+fs::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::temp_directory_path() / "attiguard_cli_tests" /
+                       (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+/// Single-quotes a string for /bin/sh.
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs `[env] attiguard ARGS` through /bin/sh in `dir`, capturing stdout and stderr.
+CliResult run_cli(const fs::path& dir, const std::string& args, const std::string& env = "") {
+  const std::string cmd = "cd " + quoted(dir.string()) + " && " + env + " " +
+                          quoted(ATTIGUARD_CLI_PATH) + " " + args + " >stdout.txt 2>stderr.txt";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(dir / "stdout.txt");
+  r.err = read_file(dir / "stderr.txt");
+  return r;
+}
+
+std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s) n += (c == '\n') ? 1 : 0;
+  return n;
+}
+
+/// The error contract: exactly one stderr line "attiguard: error: …".
+void expect_one_error_line(const CliResult& r) {
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("attiguard: error: ", 0), 0u) << r.err;
+}
+
+fs::path example(const char* name) { return fs::path(ATTIGUARD_SOURCE_DIR) / "examples" / name; }
+
+}  // namespace
+
+TEST(CliContract, VersionPrintsTheProjectVersion) {
+  const auto r = run_cli(scratch_dir(), "--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out, std::string("attiguard ") + attiguard::version_string + "\n");
+  EXPECT_TRUE(r.err.empty());
+}
+
+TEST(CliContract, HelpListsEveryScenarioKind) {
+  const auto r = run_cli(scratch_dir(), "--help");
+  EXPECT_EQ(r.exit_code, 0);
+  ASSERT_FALSE(attiguard::scenario::kinds().empty());
+  for (const auto& kind : attiguard::scenario::kinds()) {
+    EXPECT_NE(r.out.find(std::string(kind.name)), std::string::npos) << kind.name;
+    EXPECT_NE(r.out.find(std::string(kind.description)), std::string::npos) << kind.name;
+  }
+  EXPECT_NE(r.out.find("run"), std::string::npos);
+  EXPECT_NE(r.out.find("check"), std::string::npos);
+}
+
+TEST(CliContract, BadArgumentsExitTwoWithOneLine) {
+  const fs::path dir = scratch_dir();
+  for (const char* args : {"", "--bogus", "frobnicate", "run", "run x.toml", "run x.toml --out",
+                           "check", "check a.toml b.toml", "run x.toml --out o --plot=maybe"}) {
+    SCOPED_TRACE(args);
+    const auto r = run_cli(dir, args);
+    EXPECT_EQ(r.exit_code, 2);
+    expect_one_error_line(r);
+  }
+}
+
+TEST(CliContract, MissingScenarioFileIsInvalidInput) {
+  const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("does_not_exist.toml"), std::string::npos);
+}
+
+TEST(CliContract, TomlSyntaxErrorNamesFileAndLine) {
+  const fs::path dir = scratch_dir();
+  write_file(dir / "broken.toml", "kind = \"rigid_body\"\nname = = 3\n");
+  for (const char* args : {"check broken.toml", "run broken.toml --out o"}) {
+    SCOPED_TRACE(args);
+    const auto r = run_cli(dir, args);
+    EXPECT_EQ(r.exit_code, 2);
+    expect_one_error_line(r);
+    EXPECT_NE(r.err.find("broken.toml:2:"), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliContract, UnknownKindListsTheKnownOnes) {
+  const fs::path dir = scratch_dir();
+  write_file(dir / "nope.toml", "kind = \"no_such_kind\"\n");
+  const auto r = run_cli(dir, "check nope.toml");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("no_such_kind"), std::string::npos);
+  for (const auto& kind : attiguard::scenario::kinds()) {
+    EXPECT_NE(r.err.find(std::string(kind.name)), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliContract, OutputDirectoryThatCannotBeCreatedIsInvalidInput) {
+  const fs::path scenario = example("rigid_body_pd.toml");
+  if (!fs::exists(scenario)) GTEST_SKIP() << "no " << scenario;
+  const fs::path dir = scratch_dir();
+  write_file(dir / "a_file", "");
+  const auto r = run_cli(dir, "run " + quoted(scenario.string()) + " --out a_file/sub");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+}
+
+TEST(CliContract, RunWithoutPythonStillSucceedsAndSaysWhy) {
+  const fs::path scenario = example("rigid_body_pd.toml");
+  if (!fs::exists(scenario)) GTEST_SKIP() << "no " << scenario;
+  const fs::path dir = scratch_dir();
+  const auto r = run_cli(dir, "run " + quoted(scenario.string()) + " --out out --plot",
+                         "ATTIGUARD_PYTHON=/nonexistent/python3");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("no plots:"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "trajectory.csv"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "attitude_error.png"));
+}
+
+TEST(CliContract, PlottingFailureIsOneErrorLine) {
+  const fs::path scenario = example("rigid_body_pd.toml");
+  if (!fs::exists(scenario)) GTEST_SKIP() << "no " << scenario;
+  const fs::path dir = scratch_dir();
+  // A stand-in interpreter that fails like a Python traceback does.
+  write_file(dir / "failing_python",
+             "#!/bin/sh\necho 'Traceback (most recent call last):' >&2\n"
+             "echo 'ValueError: broken plot' >&2\nexit 1\n");
+  fs::permissions(dir / "failing_python", fs::perms::owner_all);
+  const auto r = run_cli(dir, "run " + quoted(scenario.string()) + " --out out --plot",
+                         "ATTIGUARD_PYTHON=" + quoted((dir / "failing_python").string()));
+  EXPECT_EQ(r.exit_code, 3);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("ValueError: broken plot"), std::string::npos) << r.err;
+}
+
+TEST(CliContract, RunWithPlotWritesTheFigures) {
+  const fs::path scenario = example("rigid_body_pd.toml");
+  if (!fs::exists(scenario)) GTEST_SKIP() << "no " << scenario;
+  const fs::path dir = scratch_dir();
+  const auto r = run_cli(dir, "run " + quoted(scenario.string()) + " --out out --plot");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  if (r.err.find("no plots:") != std::string::npos) GTEST_SKIP() << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* png : {"attitude_error.png", "angular_velocity.png", "torque.png",
+                          "quaternion.png", "energy_momentum.png"}) {
+    EXPECT_GT(fs::file_size(dir / "out" / png), 1000u) << png;
+    EXPECT_NE(r.out.find(png), std::string::npos) << "run does not list " << png;
+  }
+}
+
+#endif  // ATTIGUARD_CLI_PATH

@@ -1,0 +1,220 @@
+// The reference update laws (4)-(6) of the PET-ERG paper, the sampling clock, and the combined
+// flight-loop API used from a hand-written loop (no simulator).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+#include <vector>
+
+#include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/continuous_erg.hpp"
+#include "attiguard/governor/pet_erg.hpp"
+#include "attiguard/governor/reference_schedule.hpp"
+#include "test_support.hpp"
+
+namespace attiguard::governor {
+namespace {
+
+using lie::Mat3;
+using lie::Vec3;
+
+// Per-step functions are noexcept (flight-loop requirement).
+using CM = const Mat3&;
+using CV = const Vec3&;
+static_assert(noexcept(std::declval<AttitudeGovernor&>().step(0.0, std::declval<CM>(),
+                                                              std::declval<CV>(),
+                                                              std::declval<CM>())));
+static_assert(noexcept(std::declval<const AttitudeGovernor&>().evaluate(
+    std::declval<CM>(), std::declval<CV>(), std::declval<CM>(), std::declval<CM>(), true)));
+static_assert(noexcept(std::declval<const ReferenceSchedule&>().at(0.0)));
+
+GovernorParams paper_params(GovernorMode mode = GovernorMode::pet) {
+  GovernorParams p;
+  p.mode = mode;
+  p.gains = {5.0, 1.0};
+  p.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
+  p.tau_max = 2.5;
+  p.kappa = 1.0;
+  p.c_gamma = 3.0;
+  p.Ts = 0.5;
+  p.epsilon = 1e-3;
+  p.epsilon_gamma = 0.1;
+  return p;
+}
+
+ConeConstraint paper_cone() {
+  return keep_in_cone(Vec3(0, 0, 1), Vec3(-0.791, 0.061, -0.609), 160.0 * std::numbers::pi / 180.0);
+}
+
+TEST(ReferenceUpdate, ContinuousErgRateIsNormalisedAndVanishesOutsideTheMargin) {
+  const Vec3 rho(0.3, -0.4, 1.2);
+  const Vec3 xi = erg_reference_rate(2.0, 1.0, 0.25, rho, 1e-3);
+  EXPECT_NEAR(xi.norm(), 2.0 * 0.75, 1e-12);
+  EXPECT_NEAR(xi.normalized().dot(rho.normalized()), 1.0, 1e-12);
+  // ‖ρ‖ < ε: the rate shrinks like ρ/ε.
+  const Vec3 small = 1e-4 * rho.normalized();
+  EXPECT_NEAR(erg_reference_rate(1.0, 1.0, 0.0, small, 1e-3).norm(), 0.1, 1e-12);
+  EXPECT_EQ(erg_reference_rate(1.0, 1.0, 1.0, rho, 1e-3).norm(), 0.0);
+  EXPECT_EQ(erg_reference_rate(1.0, 1.0, 2.0, rho, 1e-3).norm(), 0.0);
+}
+
+TEST(ReferenceUpdate, PetTriggerAndHeldRate) {
+  EXPECT_TRUE(pet_trigger(3.0, 1.0, 3.0));
+  EXPECT_FALSE(pet_trigger(2.99, 1.0, 3.0));
+  const Vec3 rho(1, 0, 0);
+  EXPECT_EQ(pet_reference_rate(false, 1.0, 1.0, 0.1, rho, 1e-3).norm(), 0.0);
+  EXPECT_NEAR(pet_reference_rate(true, 1.0, 1.0, 0.1, rho, 1e-3).norm(), 0.9, 1e-15);
+}
+
+TEST(SamplingClock, FiresOnceAtEachInstantWhateverTheCallRate) {
+  SamplingClock clock(0.0, 0.5);
+  std::vector<double> fired;
+  for (int i = 0; i <= 300; ++i) {
+    const double t = i * 0.01;
+    if (clock.poll(t)) {
+      fired.push_back(t);
+      EXPECT_NEAR(clock.last_sample(), std::round(t / 0.5) * 0.5, 1e-12);
+    }
+  }
+  ASSERT_EQ(fired.size(), 7u);  // 0, 0.5, …, 3.0
+  for (std::size_t k = 0; k < fired.size(); ++k) {
+    EXPECT_NEAR(fired[k], 0.5 * static_cast<double>(k), 1e-9);
+  }
+  // Missed instants collapse into one.
+  SamplingClock slow(0.0, 0.5);
+  EXPECT_TRUE(slow.poll(0.0));
+  EXPECT_TRUE(slow.poll(2.3));
+  EXPECT_NEAR(slow.last_sample(), 2.0, 1e-12);
+  EXPECT_NEAR(slow.next_sample(), 2.5, 1e-12);
+  EXPECT_FALSE(slow.poll(2.4));
+}
+
+TEST(ReferenceSchedule, HoldAndGeodesicInterpolation) {
+  const Mat3 A = lie::exp(Vec3(0.1, 0.2, 0.3));
+  const Mat3 B = lie::exp(Vec3(-0.5, 0.4, 0.2));
+  const std::vector<Waypoint> w{{1.0, A}, {3.0, B}};
+  const ReferenceSchedule hold(w, Interpolation::hold);
+  const ReferenceSchedule slew(w, Interpolation::geodesic);
+  EXPECT_LE((hold.at(0.0) - A).norm(), 0.0);
+  EXPECT_LE((hold.at(2.9) - A).norm(), 0.0);
+  EXPECT_LE((hold.at(3.0) - B).norm(), 0.0);
+  EXPECT_LE((slew.at(3.5) - B).norm(), 1e-15);
+  const Mat3 mid = slew.at(2.0);
+  EXPECT_NEAR(lie::distance(A, mid), 0.5 * lie::distance(A, B), 1e-12);
+  EXPECT_NEAR(lie::distance(mid, B), 0.5 * lie::distance(A, B), 1e-12);
+  EXPECT_THROW(ReferenceSchedule(std::vector<Waypoint>{{1.0, A}, {1.0, B}}, Interpolation::hold),
+               std::invalid_argument);
+}
+
+TEST(AttitudeGovernor, RejectsInvalidParameters) {
+  GovernorParams p = paper_params();
+  p.c_gamma = 1.0;
+  const std::vector<ConeConstraint> cones{paper_cone()};
+  EXPECT_THROW(AttitudeGovernor(p, cones), std::invalid_argument);
+  p = paper_params();
+  p.epsilon_gamma = 2.0;
+  EXPECT_THROW(AttitudeGovernor(p, cones), std::invalid_argument);
+  p = paper_params();
+  const std::vector<ConeConstraint> too_many(kMaxCones + 1, paper_cone());
+  EXPECT_THROW(AttitudeGovernor(p, too_many), std::invalid_argument);
+}
+
+TEST(AttitudeGovernor, EvaluateExposesEveryQuantity) {
+  const std::vector<ConeConstraint> cones{paper_cone()};
+  const AttitudeGovernor gov(paper_params(), cones);
+  const Mat3 R = Mat3::Identity();
+  const Vec3 w(0.2, 0.3, 0.4);
+  const Mat3 R_d = lie::exp(Vec3(0, std::numbers::pi / 2, 0));
+  const GovernorOutput out = gov.evaluate(R, w, R, R_d, true);
+  EXPECT_NEAR(out.V, 0.35, 1e-15);
+  EXPECT_NEAR(out.gamma_d, gov.gamma_d(), 0.0);
+  EXPECT_NEAR(out.gamma, std::min(out.gamma_d, out.gamma_g), 0.0);
+  EXPECT_LE((out.tau_b + w).norm(), 1e-15);  // R = R_g: τ = −k_d ω
+  EXPECT_EQ(out.cone_count, 1);
+  EXPECT_NEAR(out.margins[0], pointing_margin(cones[0], R), 0.0);
+  EXPECT_NEAR(out.xi_g.norm(), out.gamma - out.V, 1e-12);
+  EXPECT_FALSE(gov.trigger_condition(R, w, R));  // Γ − 3V < 0 at t = 0 in the paper's example
+  const GovernorOutput held = gov.evaluate(R, w, R, R_d, false);
+  EXPECT_EQ(held.xi_g.norm(), 0.0);
+  // Mode none: R_g is R_d itself.
+  const AttitudeGovernor none(paper_params(GovernorMode::none), cones);
+  EXPECT_LE((none.evaluate(R, w, R, R_d, true).R_g - R_d).norm(), 0.0);
+}
+
+/// A hand-written flight loop: the body is propagated with RK4 under a torque held over each
+/// control period (zero-order hold, as on board), the governor is stepped at 100 Hz.
+struct LoopResult {
+  double max_tau{0.0};
+  double min_margin{1.0};
+  double max_V_minus_Gamma{-1.0};
+  double final_phi{1.0};
+  int samples{0};
+  bool flag_changed_off_sample{false};
+};
+
+LoopResult flight_loop(GovernorMode mode, double duration) {
+  const std::vector<ConeConstraint> cones{paper_cone()};
+  const GovernorParams p = paper_params(mode);
+  AttitudeGovernor gov(p, cones);
+  const Mat3 R_d = lie::exp(Vec3(0, std::numbers::pi / 2, 0));
+  Mat3 R = Mat3::Identity();
+  Vec3 w(0.2, 0.3, 0.4);
+  const Mat3 J = p.J;
+  const Mat3 J_inv = J.inverse();
+  const double dt = 0.01;
+  gov.reset(0.0, R);
+  LoopResult r;
+  bool prev_flag = gov.trigger_flag();
+  const auto n = static_cast<int>(std::lround(duration / dt));
+  for (int k = 0; k <= n; ++k) {
+    const double t = k * dt;
+    const GovernorOutput& out = gov.step(t, R, w, R_d);
+    r.max_tau = std::max(r.max_tau, out.tau_b.norm());
+    r.min_margin = std::min(r.min_margin, out.min_margin());
+    r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
+    r.samples += out.sampled ? 1 : 0;
+    if (out.trigger != prev_flag && !out.sampled) {
+      r.flag_changed_off_sample = true;
+    }
+    prev_flag = out.trigger;
+    // Plant: Ṙ = R ω̂, J ω̇ = (Jω) × ω + τ with τ held (RK4 on ω, exp map for R, 10 substeps).
+    const Vec3 tau = out.tau_b;
+    for (int s = 0; s < 10; ++s) {
+      const double h = dt / 10.0;
+      auto f = [&](const Vec3& om) { return Vec3(J_inv * ((J * om).cross(om) + tau)); };
+      const Vec3 k1 = f(w);
+      const Vec3 k2 = f(w + 0.5 * h * k1);
+      const Vec3 k3 = f(w + 0.5 * h * k2);
+      const Vec3 k4 = f(w + h * k3);
+      const Vec3 w_next = w + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+      R = R * lie::exp(0.5 * h * (w + w_next));
+      w = w_next;
+    }
+  }
+  r.final_phi = lie::phi(R_d.transpose() * R);
+  return r;
+}
+
+TEST(AttitudeGovernor, FlightLoopWithoutTheSimulatorKeepsConstraintsAndConverges) {
+  const LoopResult pet = flight_loop(GovernorMode::pet, 60.0);
+  EXPECT_LE(pet.max_tau, 2.5);
+  EXPECT_GE(pet.min_margin, 0.0);
+  EXPECT_LE(pet.max_V_minus_Gamma, 0.0);
+  EXPECT_LT(pet.final_phi, 1e-6);
+  EXPECT_EQ(pet.samples, 121);  // t = 0, 0.5, …, 60
+  EXPECT_FALSE(pet.flag_changed_off_sample);
+
+  const LoopResult erg = flight_loop(GovernorMode::continuous, 60.0);
+  EXPECT_LE(erg.max_tau, 2.5);
+  EXPECT_GE(erg.min_margin, 0.0);
+  EXPECT_LT(erg.final_phi, 1e-6);
+
+  const LoopResult none = flight_loop(GovernorMode::none, 20.0);
+  EXPECT_GT(none.max_tau, 2.5);
+  EXPECT_LT(none.min_margin, 0.0);
+}
+
+}  // namespace
+}  // namespace attiguard::governor

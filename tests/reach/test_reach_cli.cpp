@@ -1,0 +1,102 @@
+// `attiguard reach`: outputs, JSON keys, exit codes for bad inputs.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+#ifdef ATTIGUARD_CLI_PATH
+
+using attiguard::test::fresh_dir;
+using attiguard::test::read_file;
+using attiguard::test::run_cli;
+
+namespace {
+/// Writes a reach scenario built from the paper example with `extra` appended / replaced.
+std::filesystem::path write_scenario(const std::string& name, const std::string& body) {
+  const auto dir = fresh_dir("reach_scn_" + name);
+  const auto path = dir / (name + ".toml");
+  std::ofstream(path) << body;
+  return path;
+}
+
+std::string paper_body(const std::string& initial_extra, const std::string& reach_extra,
+                       double attitude_radius = 0.1, const std::string& samples = "200") {
+  return "kind = \"reach\"\n[system]\nmodel = \"linear_omega\"\n"
+         "matrix = [[-2.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -3.0]]\n"
+         "[initial]\nattitude_radius = " + std::to_string(attitude_radius) +
+         "\nomega_b = [0.65, 0.54, 0.61]\nomega_radius = 0.1\n" + initial_extra +
+         "[reach]\nhorizon = 1.0\nsteps = 10\n" + reach_extra +
+         "[soundness]\nsamples = " + samples + "\n";
+}
+}  // namespace
+
+TEST(ReachCli, PaperExampleWritesReachJsonWithTheIssueKeys) {
+  const auto out = fresh_dir("reach_paper_out");
+  const auto r = run_cli("reach examples/conreach_paper.toml --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
+  for (const char* key : {"steps", "verdict", "soundness", "sdp_solves", "wall_time_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  ASSERT_EQ(j["steps"].size(), 40u);
+  for (const char* key : {"t", "c", "Q", "P", "r", "omega_box"}) {
+    EXPECT_TRUE(j["steps"][0].contains(key)) << key;
+  }
+  EXPECT_EQ(j["steps"][0]["omega_box"]["lower"].size(), 3u);
+  EXPECT_EQ(j["steps"][0]["omega_box"]["upper"].size(), 3u);
+  EXPECT_EQ(j["soundness"]["samples"].get<long>(), 10000);
+  EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
+  EXPECT_EQ(j["verdict"], "safe");
+  EXPECT_EQ(j["sdp_solves"].get<long>(), 120);
+  for (const char* f : {"trajectory.csv", "steps.csv", "tube.csv", "boundary.csv", "samples.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  std::filesystem::remove_all(out);
+}
+
+TEST(ReachCli, NonSpdMetricIsInvalidInput) {
+  const auto p = write_scenario("nonspd", paper_body("metric_P = [[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0]]\n", ""));
+  const auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("metric_P"), std::string::npos) << r.err;
+  EXPECT_EQ(attiguard::test::count_lines(r.err), 1);
+}
+
+TEST(ReachCli, NanIsInvalidInput) {
+  const auto p = write_scenario("nan", paper_body("", "rate_step = nan\n"));
+  const auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("rate_step"), std::string::npos) << r.err;
+}
+
+TEST(ReachCli, BallLeavingASingleChartIsANumericalFailure) {
+  const auto p = write_scenario("chart", paper_body("", "", 3.0, "0"));
+  const auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("chart"), std::string::npos) << r.err;
+  EXPECT_EQ(attiguard::test::count_lines(r.err), 1);
+}
+
+TEST(ReachCli, UnprovableSafetyExitsWith4AfterWritingOutputs) {
+  const auto p = write_scenario("unsafe", paper_body("", "") + "[safety]\nomega_norm_max = 0.5\n");
+  const auto out = p.parent_path() / "out";
+  const auto r = run_cli("reach '" + p.string() + "' --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
+  EXPECT_EQ(j["verdict"], "cannot_prove");
+  EXPECT_DOUBLE_EQ(j["first_failure_time"].get<double>(), 0.0);
+}
+
+TEST(ReachCli, UnknownKeyAndMissingFileAreInvalidInput) {
+  const auto p = write_scenario("typo", paper_body("", "horizn = 2.0\n"));
+  auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = run_cli("reach /nonexistent/x.toml --out /tmp/attiguard_reach_none");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+}
+
+#endif  // ATTIGUARD_CLI_PATH

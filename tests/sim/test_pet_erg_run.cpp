@@ -1,0 +1,306 @@
+// Scenario kind `pet_erg`: the paper's Sec. V example end to end, the comparison with the
+// unconstrained PD law, rejection of inadmissible scenarios, and a randomised property test.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
+#include "test_support.hpp"
+
+namespace attiguard::sim {
+namespace {
+
+using governor::ConeConstraint;
+using governor::GovernorMode;
+using lie::Mat3;
+using lie::Vec3;
+
+std::string example_text(const std::string& name) {
+  std::ifstream in(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "examples" / name);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// The paper example with `from` replaced by `to` (first occurrence).
+scenario::Document paper_doc(const std::string& from = "", const std::string& to = "") {
+  std::string text = example_text("pet_erg_paper.toml");
+  if (!from.empty()) {
+    const auto pos = text.find(from);
+    EXPECT_NE(pos, std::string::npos) << from;
+    text.replace(pos, from.size(), to);
+  }
+  return scenario::parse_document(text, "pet_erg_paper.toml");
+}
+
+std::string input_error(const scenario::Document& doc) {
+  try {
+    (void)scenario::parse_pet_erg(doc);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return {};
+}
+
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("attiguard_pet_erg_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+TEST(PetErgRun, PaperScenarioMeetsEveryAcceptanceCriterion) {
+  const scenario::PetErgScenario sc = scenario::parse_pet_erg(paper_doc());
+  ASSERT_EQ(sc.params.mode, GovernorMode::pet);
+  const auto dir = temp_dir("paper");
+  const nlohmann::json s = run_pet_erg(sc, dir);
+  for (const char* key : {"gamma_d", "gamma_d_loose", "gamma_g_initial", "V_initial",
+                          "max_torque_norm", "min_pointing_margin", "max_V_minus_Gamma",
+                          "final_attitude_error", "final_reference_error", "samples",
+                          "samples_updating", "steps", "wall_time_s"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+  EXPECT_LE(s["max_torque_norm"].get<double>(), 2.5);
+  EXPECT_GE(s["min_pointing_margin"].get<double>(), 0.0);
+  EXPECT_LE(s["max_V_minus_Gamma"].get<double>(), 0.0);
+  EXPECT_LT(s["final_attitude_error"].get<double>(), 1e-6);
+  EXPECT_LT(s["final_reference_error"].get<double>(), 1e-6);
+  EXPECT_TRUE(s["constraints_satisfied"].get<bool>());
+  EXPECT_NEAR(s["V_initial"].get<double>(), 0.35, 1e-12);
+  EXPECT_GT(s["gamma_d"].get<double>(), s["gamma_d_loose"].get<double>());
+  EXPECT_EQ(s["samples"].get<long>(), 120);  // t_k = 0, 0.5, …, 59.5
+  EXPECT_LT(s["samples_updating"].get<long>(), 120);  // the trigger did hold the reference
+  EXPECT_GT(s["samples_updating"].get<long>(), 0);
+  // trajectory.csv: header with every column the issue lists, rows at t = 0, 0.01, …, 60.
+  std::ifstream csv(dir / "trajectory.csv");
+  std::string header;
+  std::getline(csv, header);
+  for (const char* col : {"t", "q_w", "omega_x", "tau_x", "tau_norm", "qg_w", "V", "gamma_d",
+                          "gamma_g", "gamma", "trigger", "margin_0"}) {
+    EXPECT_NE(("," + header + ",").find(std::string(",") + col + ","), std::string::npos) << col;
+  }
+  long rows = 0;
+  for (std::string line; std::getline(csv, line);) {
+    rows += line.empty() ? 0 : 1;
+  }
+  EXPECT_EQ(rows, 6001);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PetErgRun, UnconstrainedPdViolatesTheConeAndTheSummarySaysSo) {
+  const scenario::PetErgScenario sc =
+      scenario::parse_pet_erg(paper_doc("governor = \"pet\"", "governor = \"none\""));
+  const PetErgResult r = simulate_pet_erg(sc);
+  const nlohmann::json s = pet_erg_summary(sc, r, 0.0);
+  EXPECT_LT(s["min_pointing_margin"].get<double>(), 0.0);
+  EXPECT_FALSE(s["pointing_constraints_satisfied"].get<bool>());
+  EXPECT_FALSE(s["constraints_satisfied"].get<bool>());
+  EXPECT_TRUE(s["first_pointing_violation_time"].is_number());
+  EXPECT_GT(s["max_torque_norm"].get<double>(), 2.5);
+  EXPECT_FALSE(s["torque_limit_satisfied"].get<bool>());
+}
+
+TEST(PetErgRun, ContinuousErgAlsoKeepsTheConstraintsOnThePaperScenario) {
+  const PetErgResult r = simulate_pet_erg(
+      scenario::parse_pet_erg(paper_doc("governor = \"pet\"", "governor = \"continuous\"")));
+  EXPECT_LE(r.max_torque_norm, 2.5);
+  EXPECT_GE(r.min_pointing_margin, 0.0);
+  EXPECT_LE(r.max_V_minus_Gamma, 0.0);
+  EXPECT_LT(r.final_attitude_error, 1e-6);
+  EXPECT_EQ(r.samples, 0);
+}
+
+TEST(PetErgRun, AdaptiveIntegratorGivesTheSameResult) {
+  const PetErgResult fixed = simulate_pet_erg(scenario::parse_pet_erg(paper_doc()));
+  const PetErgResult adaptive = simulate_pet_erg(scenario::parse_pet_erg(
+      paper_doc("integrator = \"rkmk4\"\nstep = 0.01",
+                "integrator = \"rkmk_dp54\"\nabs_tol = 1e-10\nrel_tol = 1e-10")));
+  EXPECT_LE(adaptive.max_torque_norm, 2.5);
+  EXPECT_GE(adaptive.min_pointing_margin, 0.0);
+  EXPECT_LE(adaptive.max_V_minus_Gamma, 0.0);
+  EXPECT_LT(adaptive.final_attitude_error, 1e-6);
+  EXPECT_EQ(adaptive.samples_updating, fixed.samples_updating);
+  EXPECT_NEAR(adaptive.min_pointing_margin, fixed.min_pointing_margin, 1e-6);
+}
+
+TEST(PetErgRun, MultiConeScheduleExampleKeepsEveryConstraint) {
+  const scenario::PetErgScenario sc = scenario::parse_pet_erg(
+      scenario::parse_document(example_text("pet_erg_multi_cone.toml"), "pet_erg_multi_cone.toml"));
+  ASSERT_EQ(sc.cones.size(), 3u);
+  ASSERT_EQ(sc.desired.size(), 4);
+  const PetErgResult r = simulate_pet_erg(sc);
+  EXPECT_LE(r.max_torque_norm, sc.params.tau_max);
+  EXPECT_GE(r.min_pointing_margin, 0.0);
+  EXPECT_LE(r.max_V_minus_Gamma, 0.0);
+  EXPECT_LT(r.final_attitude_error, 1e-6);
+  // Without the governor the same schedule violates a cone.
+  scenario::PetErgScenario none = sc;
+  none.params.mode = GovernorMode::none;
+  EXPECT_LT(simulate_pet_erg(none).min_pointing_margin, 0.0);
+}
+
+TEST(PetErgScenario, RejectsAnInadmissibleInitialState) {
+  const std::string msg =
+      input_error(paper_doc("omega_b = [0.2, 0.3, 0.4]", "omega_b = [0.2, 0.3, 0.6]"));
+  EXPECT_NE(msg.find("pet_erg_paper.toml:"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("initial.omega_b"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not admissible"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos);
+}
+
+TEST(PetErgScenario, RejectsADesiredAttitudeThatViolatesAConeOrSitsInItsRepulsiveBand) {
+  // R_d = exp(π ê_y) turns e_z onto −e_z, c = 0.609 ≥ cos θ_c: fine; the antipode of a_c is not.
+  // Rotating e_z onto −a_c (c = −1) violates the cone.
+  const std::string bad = "attitude = { axis = [0.0, 1.0, 0.0], angle_deg = 90.0 }";
+  const Vec3 a_c = Vec3(-0.791, 0.061, -0.609).normalized();
+  const Vec3 axis = Vec3(0, 0, 1).cross(-a_c).normalized();
+  const double angle = std::acos(Vec3(0, 0, 1).dot(-a_c)) * 180.0 / std::numbers::pi;
+  std::ostringstream os;
+  os.precision(17);
+  os << "attitude = { axis = [" << axis(0) << ", " << axis(1) << ", " << axis(2)
+     << "], angle_deg = " << angle << " }";
+  const std::string msg = input_error(paper_doc(bad, os.str()));
+  EXPECT_NE(msg.find("desired.attitude"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("violates"), std::string::npos) << msg;
+  // 5° inside the repulsive band: β = 157° from a_c (cos = −0.9205 < ζ = −0.8397).
+  const Vec3 b = lie::exp((std::acos(Vec3(0, 0, 1).dot(a_c)) - 157.0 * std::numbers::pi / 180.0) *
+                          Vec3(0, 0, 1).cross(a_c).normalized()) * Vec3(0, 0, 1);
+  ASSERT_NEAR(std::acos(b.dot(a_c)) * 180.0 / std::numbers::pi, 157.0, 1e-9);
+  const Vec3 axis2 = Vec3(0, 0, 1).cross(b).normalized();
+  std::ostringstream os2;
+  os2.precision(17);
+  os2 << "attitude = { axis = [" << axis2(0) << ", " << axis2(1) << ", " << axis2(2)
+      << "], angle = " << std::acos(b(2)) << " }";
+  const std::string msg2 = input_error(paper_doc(bad, os2.str()));
+  EXPECT_NE(msg2.find("desired.attitude"), std::string::npos) << msg2;
+  EXPECT_NE(msg2.find("repulsive band"), std::string::npos) << msg2;
+}
+
+TEST(PetErgScenario, RejectsBadKeysWithLocations) {
+  EXPECT_NE(input_error(paper_doc("governor = \"pet\"", "governor = \"pid\"")).find("governor"),
+            std::string::npos);
+  EXPECT_NE(input_error(paper_doc("c_gamma = 3.0", "c_gamma = 1.0")).find("erg.c_gamma"),
+            std::string::npos);
+  EXPECT_NE(input_error(paper_doc("zeta_offset = 0.05", "zeta_offest = 0.05")).find("zeta_offest"),
+            std::string::npos);
+  EXPECT_NE(input_error(paper_doc("half_angle_deg = 160.0", "half_angle_deg = 200.0"))
+                .find("cones[0].half_angle_deg"),
+            std::string::npos);
+}
+
+#ifdef ATTIGUARD_CLI_PATH
+TEST(PetErgCli, InadmissibleScenarioExitsWithCode2AndOneLine) {
+  const auto dir = temp_dir("cli");
+  std::filesystem::create_directories(dir);
+  std::string text = example_text("pet_erg_paper.toml");
+  text.replace(text.find("omega_b = [0.2, 0.3, 0.4]"), 25, "omega_b = [0.9, 0.3, 0.4]");
+  std::ofstream(dir / "bad.toml") << text;
+  const std::string cmd = std::string("'") + ATTIGUARD_CLI_PATH + "' run '" + (dir / "bad.toml").string() +
+                          "' --out '" + (dir / "out").string() + "' 2>'" + (dir / "err").string() +
+                          "' >/dev/null";
+  const int status = std::system(cmd.c_str());
+  EXPECT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream err(dir / "err");
+  std::stringstream ss;
+  ss << err.rdbuf();
+  EXPECT_NE(ss.str().find("bad.toml:"), std::string::npos) << ss.str();
+  EXPECT_NE(ss.str().find("initial.omega_b"), std::string::npos) << ss.str();
+  std::filesystem::remove_all(dir);
+}
+#endif
+
+// ≥ 200 randomised scenarios: random J, R_d, keep-in/keep-out cones on random body axes, and
+// ω(0) inside the admissible set. Zero violations and V ≤ Γ at every integrator step.
+TEST(PetErgProperty, RandomScenariosNeverViolateAConstraint) {
+  std::mt19937_64 gen(424242);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto unit = [&] {
+    std::normal_distribution<double> n(0.0, 1.0);
+    return Vec3(n(gen), n(gen), n(gen)).normalized();
+  };
+  int run = 0;
+  int attempts = 0;
+  long total_steps = 0;
+  int converged = 0;
+  while (run < 220 && attempts < 20000) {
+    ++attempts;
+    scenario::PetErgScenario sc;
+    sc.name = "random";
+    sc.params.mode = run % 4 == 3 ? GovernorMode::continuous : GovernorMode::pet;
+    Vec3 d(0.5 + 4.5 * u(gen), 0.5 + 4.5 * u(gen), 0.5 + 4.5 * u(gen));
+    std::sort(d.data(), d.data() + 3);
+    d(2) = std::min(d(2), d(0) + d(1));
+    const Mat3 Q = lie::exp(3.0 * unit());
+    sc.params.J = Q * d.asDiagonal() * Q.transpose();
+    sc.params.gains = {1.0 + 9.0 * u(gen), 0.5 + 2.5 * u(gen)};
+    sc.params.tau_max = 0.5 + 4.0 * u(gen);
+    sc.params.kappa = 0.5 + 2.0 * u(gen);
+    sc.params.c_gamma = 1.5 + 3.0 * u(gen);
+    sc.params.Ts = 0.1 + 0.9 * u(gen);
+    const int n_cones = 1 + static_cast<int>(3 * u(gen));
+    for (int i = 0; i < n_cones; ++i) {
+      if (u(gen) < 0.7) {
+        sc.cones.push_back(governor::keep_out_cone(unit(), unit(), (10.0 + 30.0 * u(gen)) *
+                                                                       std::numbers::pi / 180.0));
+      } else {
+        sc.cones.push_back(governor::keep_in_cone(unit(), unit(), (100.0 + 60.0 * u(gen)) *
+                                                                      std::numbers::pi / 180.0));
+      }
+    }
+    sc.R0_ib = lie::exp(3.0 * unit());
+    sc.R_g0 = sc.R0_ib;
+    const Mat3 R_d = lie::exp(3.0 * unit());
+    bool ok = true;
+    for (const ConeConstraint& c : sc.cones) {
+      ok = ok && governor::cone_cosine(c, R_d) >= c.zeta &&
+           governor::cone_cosine(c, sc.R0_ib) > c.delta;
+    }
+    if (!ok) {
+      continue;
+    }
+    sc.desired = governor::ReferenceSchedule(R_d);
+    const governor::AttitudeGovernor gov(sc.params, sc.cones);
+    const double gamma0 = gov.gamma(sc.R_g0);
+    if (!(gamma0 > 1e-3)) {
+      continue;
+    }
+    // ω(0) with V(0) = fraction · Γ(R_0): ½ωᵀJω = fraction · Γ.
+    const Vec3 dir = unit();
+    const double fraction = 0.98 * u(gen);
+    sc.omega0_b = std::sqrt(2.0 * fraction * gamma0 / dir.dot(sc.params.J * dir)) * dir;
+    sc.duration = 15.0;
+    sc.output_interval = 15.0;
+    sc.integrator.method = integrate::Method::rkmk4;
+    sc.integrator.step = 0.01;
+    const PetErgResult r = simulate_pet_erg(sc);
+    ++run;
+    total_steps += r.steps;
+    converged += r.final_reference_error < 1e-6 ? 1 : 0;
+    EXPECT_LE(r.max_torque_norm, sc.params.tau_max) << "scenario " << run;
+    EXPECT_GE(r.min_pointing_margin, 0.0) << "scenario " << run;
+    EXPECT_LE(r.max_V_minus_Gamma, 0.0) << "scenario " << run;
+  }
+  EXPECT_GE(run, 200);
+  RecordProperty("scenarios", run);
+  RecordProperty("reference_converged_within_15s", converged);
+  EXPECT_GT(total_steps, 200L * 1000L);
+}
+
+}  // namespace
+}  // namespace attiguard::sim

@@ -1,0 +1,139 @@
+// Scenario kind `waypoint`: the paper scenario and the fine-position scenario end to end, outputs,
+// and input errors (issue 4 acceptance).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/sim/waypoint_run.hpp"
+#include "cli_runner.hpp"
+
+namespace attiguard::sim {
+namespace {
+
+scenario::WaypointScenario load(const std::string& file) {
+  return scenario::parse_waypoint(scenario::load_document(std::string(ATTIGUARD_SOURCE_DIR) + "/" + file));
+}
+
+TEST(WaypointRun, PaperScenarioVisitsTheWaypointsInOrder) {
+  const scenario::WaypointScenario sc = load("examples/waypoint_paper.toml");
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.completed);
+  ASSERT_TRUE(res.finite);
+  std::vector<int> arrivals;
+  double t_prev = 0.0;
+  for (const TransitionRecord& r : res.transitions) {
+    if (r.reason == guidance::TransitionReason::accuracy_met) arrivals.push_back(r.waypoint);
+  }
+  EXPECT_EQ(arrivals, (std::vector<int>{0, 1, 2}));
+  for (const WaypointResult& w : res.waypoints) {
+    EXPECT_TRUE(w.reached);
+    EXPECT_GT(w.arrival_time, t_prev);
+    t_prev = w.arrival_time;
+    EXPECT_LT(w.final_speed, sc.mission.speed_accuracy);  // κ_p = 0: only the speed is nulled
+    std::printf("paper WP-%d: t = %.1f s, |e| = %.3f m, |v| = %.4f m/s, dv = %.3f m/s\n", w.index + 1,
+                w.arrival_time, w.final_position_error, w.final_speed, w.delta_v());
+  }
+}
+
+TEST(WaypointRun, FinePositionControlReachesEveryWaypoint) {
+  const scenario::WaypointScenario sc = load("examples/waypoint_fine.toml");
+  ASSERT_GT(sc.mission.rct.kappa_p, 0.0);
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.completed);
+  for (const WaypointResult& w : res.waypoints) {
+    EXPECT_TRUE(w.reached);
+    EXPECT_LT(w.final_position_error, 1.0);
+    EXPECT_LT(w.final_speed, 0.01);
+    std::printf("fine WP-%d: t = %.1f s, |e| = %.3f m, |v| = %.4f m/s, dv = %.3f m/s\n", w.index + 1,
+                w.arrival_time, w.final_position_error, w.final_speed, w.delta_v());
+  }
+  EXPECT_LE(res.max_torque_norm, 5.0 * std::sqrt(3.0) + 1e-9);  // wheel limit 5 N·m per axis
+}
+
+std::string doc_with(const std::string& from, const std::string& to);
+
+TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {
+  // (14) holds along a line: braking on ‖e‖ with a lateral offset passes the closest point with
+  // speed left, which κ_p = 0 cannot take back.
+  const auto norm = scenario::parse_waypoint(scenario::parse_document(
+      doc_with("braking_distance = \"along_velocity\"", "braking_distance = \"norm\""), "norm.toml"));
+  const WaypointSimResult r_norm = simulate_waypoint(norm);
+  const WaypointSimResult r_along = simulate_waypoint(load("examples/waypoint_paper.toml"));
+  EXPECT_GT(r_norm.waypoints[2].final_position_error, 5.0);
+  EXPECT_LT(r_along.waypoints[2].final_position_error, 1.0);
+}
+
+std::string doc_with(const std::string& from, const std::string& to) {
+  std::ifstream in(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/waypoint_paper.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  text.replace(pos, from.size(), to);
+  return text;
+}
+
+void expect_input_error(const std::string& text, const std::string& needle) {
+  try {
+    (void)scenario::parse_waypoint(scenario::parse_document(text, "bad.toml"));
+    ADD_FAILURE() << "no InputError for " << needle;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(WaypointScenario, RejectsUnreachableWaypointsAndBadParameters) {
+  expect_input_error(doc_with("duration = 6000.0", "duration = 1000.0"), "unreachable");
+  expect_input_error(doc_with("main_thrust = 20.0", "main_thrust = -20.0"), "main_thrust");
+  expect_input_error(doc_with("acceleration_fraction = 0.2", "acceleration_fraction = 0.7"),
+                     "acceleration_fraction");
+  expect_input_error(doc_with("replan_distance = 50.0", "replan_distance = 0.001"), "replan_distance");
+  expect_input_error(doc_with("kappa_d = 5.0", "kappa_d = 0.0"), "kappa_d");
+  expect_input_error(doc_with("output_interval = 1.0", "output_interval = 0.01"), "output_interval");
+  expect_input_error(doc_with("cruise_speed = 100.0", "cruise_sped = 100.0"), "cruise_sped");
+}
+
+#ifdef ATTIGUARD_CLI_PATH
+TEST(WaypointCli, RunWritesTheListedOutputs) {
+  const auto out = test::fresh_dir("waypoint_run");
+  const test::CliResult r = test::run_cli("run examples/waypoint_paper.toml --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = test::read_file(out / "trajectory.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "t,p_x,p_y,p_z,v_x,v_y,v_z,q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z,tau_x,tau_y,tau_z,"
+            "thrust,rct_1,rct_2,rct_3,rct_4,rct_5,rct_6,mode,waypoint");
+  const auto s = nlohmann::json::parse(test::read_file(out / "summary.json"));
+  for (const char* key : {"waypoints", "total_time", "total_delta_v", "max_torque_norm", "steps",
+                          "wall_time_s"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+  ASSERT_EQ(s.at("waypoints").size(), 3u);
+  for (const auto& w : s.at("waypoints")) {
+    for (const char* key : {"index", "arrival_time", "final_position_error", "final_speed", "delta_v"}) {
+      EXPECT_TRUE(w.contains(key)) << key;
+    }
+  }
+  std::filesystem::remove_all(out);
+}
+
+TEST(WaypointCli, BadScenarioExitsWithCode2) {
+  const auto dir = test::fresh_dir("waypoint_bad");
+  {
+    std::ofstream f(dir / "bad.toml");
+    f << doc_with("duration = 6000.0", "duration = 100.0");
+  }
+  const test::CliResult r = test::run_cli("run '" + (dir / "bad.toml").string() + "' --out '" +
+                                          (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unreachable"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+#endif
+
+}  // namespace
+}  // namespace attiguard::sim

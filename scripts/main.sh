@@ -1,14 +1,43 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds attiguard and runs the main example: a rigid body under the
-# PD attitude law, with its trajectory, summary and plots written to out/rigid_body_pd/.
+# Installs the dependencies, builds attiguard and runs the main job: the three paper scenarios
+# (PET-ERG, waypoint guidance, ConReach), the hold-interval certificate, the constrained waypoint
+# mission and the Python figure, with summaries and figures in out/ and an index page
+# out/index.md to open first.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/setup.sh
 bash scripts/build.sh
 
-out=out/rigid_body_pd
-build/src/attiguard run examples/rigid_body_pd.toml --out "$out" --plot
+cli=build/src/attiguard
+out=out
+mkdir -p "$out"
+
+# The first example of the README (rigid body under the PD law).
+$cli run examples/rigid_body_pd.toml --out "$out/rigid_body_pd" --plot
+# The three paper scenarios.
+$cli run examples/pet_erg_paper.toml --out "$out/pet_erg_paper" --plot
+$cli run examples/waypoint_paper.toml --out "$out/waypoint_paper" --plot
+$cli reach examples/conreach_paper.toml --out "$out/conreach_paper" --plot
+# The systems together: the PET-ERG's hold interval certified by ConReach, and the waypoint
+# mission through the PET-ERG (skipped when this build has no `mission` kind).
+$cli reach examples/conreach_hold_certificate.toml --out "$out/conreach_hold_certificate" --plot
+if $cli check examples/mission_sun_constrained.toml >/dev/null 2>&1; then
+  $cli run examples/mission_sun_constrained.toml --out "$out/mission_sun_constrained" --plot
+fi
+# A paper figure from the Python package (docs/python.md).
+if [[ -f build/python/attiguard/__init__.py ]]; then
+  PYTHONPATH="$(pwd)/build/python" /usr/bin/python3 examples/python_pet_erg_figure.py "$out/python"
+fi
+
+/usr/bin/python3 scripts/results_index.py "$out" \
+  "mission_sun_constrained|Constrained waypoint mission (star tracker kept out of the Sun)|attiguard run examples/mission_sun_constrained.toml --out out/mission_sun_constrained --plot|docs/mission.md" \
+  "pet_erg_paper|PET-ERG paper, Sec. V: constrained attitude slew|attiguard run examples/pet_erg_paper.toml --out out/pet_erg_paper --plot|docs/pet-erg.md" \
+  "waypoint_paper|Waypoint paper, Sec. VI: single-main-engine waypoint tracking|attiguard run examples/waypoint_paper.toml --out out/waypoint_paper --plot|docs/waypoint.md" \
+  "conreach_paper|ConReach paper, Sec. 6: reachable sets on SO(3)xR3|attiguard reach examples/conreach_paper.toml --out out/conreach_paper --plot|docs/reach.md" \
+  "conreach_hold_certificate|Hold-interval certificate of the PET-ERG (ConReach, verdict safe)|attiguard reach examples/conreach_hold_certificate.toml --out out/conreach_hold_certificate --plot|docs/mission.md" \
+  "python|PET-ERG paper Fig. 4 from Python|/usr/bin/python3 examples/python_pet_erg_figure.py out/python|docs/python.md" \
+  "rigid_body_pd|Rigid body under the PD law (first example)|attiguard run examples/rigid_body_pd.toml --out out/rigid_body_pd --plot|docs/scenario-format.md"
 
 echo
-echo "Results are in $(pwd)/$out/ (trajectory.csv, summary.json and the *.png plots)."
+echo "Results are in $(pwd)/$out/: open $out/index.md first."

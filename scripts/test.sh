@@ -7,3 +7,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
+
+# The Python package's tests (python/tests), with Debian's interpreter; conftest.py puts
+# build/python (the bindings) and python/ (the plotting package) on sys.path.
+ATTIGUARD_BUILD_DIR="$(pwd)/build" /usr/bin/python3 -m pytest -q python/tests

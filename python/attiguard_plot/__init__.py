@@ -38,11 +38,13 @@ def plotters():
 
     Imported lazily so that ``import attiguard_plot`` works without matplotlib.
     """
-    from . import rigid_body, pet_erg, reach, waypoint
+    from . import campaign, mission, pet_erg, reach, rigid_body, waypoint
 
     return {
         "rigid_body": rigid_body.plot,
         "pet_erg": pet_erg.plot,
         "reach": reach.plot,
         "waypoint": waypoint.plot,
+        "campaign": campaign.plot,
+        "mission": mission.plot,
     }

@@ -64,7 +64,8 @@ def main(argv: list[str] | None = None) -> int:
     from .common import load_run
 
     try:
-        written = plot(load_run(args.dir))
+        load = getattr(plot, "load", load_run)  # campaign: runs.csv, not trajectory.csv
+        written = plot(load(args.dir))
     except PlotInputError as e:
         _error(f"error: {e}")
         return EXIT_USAGE

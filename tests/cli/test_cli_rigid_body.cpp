@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <ostream>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -68,6 +70,9 @@ struct BadInput {
   const char* line;  // ":LINE:" the message must contain
 };
 
+// gtest prints the parameter in test listings: show the file, not the pointers' bytes.
+void PrintTo(const BadInput& p, std::ostream* os) { *os << p.file; }
+
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, CheckExitsTwoWithOneLineNamingLineAndKey) {
@@ -90,7 +95,11 @@ INSTANTIATE_TEST_SUITE_P(
     Issue2Acceptance, CliBadInput,
     ::testing::Values(BadInput{"typo_key.toml", "control.kpp", ":15:"},
                       BadInput{"non_orthonormal.toml", "control.reference", ":17:"},
-                      BadInput{"nan_value.toml", "initial.omega_b", ":11:"}));
+                      BadInput{"nan_value.toml", "initial.omega_b", ":11:"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) {
+      std::string name = info.param.file;  // "typo_key.toml" -> "typo_key"
+      return name.substr(0, name.find('.'));
+    });
 
 TEST(Cli, MissingFileAndBadArgumentsExitTwo) {
   EXPECT_EQ(run_cli("check examples/does_not_exist.toml").exit_code, 2);

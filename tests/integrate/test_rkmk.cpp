@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "attiguard/control/pd_so3.hpp"
@@ -241,7 +242,10 @@ TEST_P(StopsExactly, NonFiniteDynamicsRaiseNumericalError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothMethods, StopsExactly,
-                         ::testing::Values(Method::rkmk4, Method::rkmk_dp54));
+                         ::testing::Values(Method::rkmk4, Method::rkmk_dp54),
+                         [](const ::testing::TestParamInfo<Method>& info) {
+                           return std::string(info.param == Method::rkmk4 ? "rkmk4" : "rkmk_dp54");
+                         });
 
 TEST(Integrator, MaxStepsIsEnforced) {
   IntegratorSettings s = fixed(1e-3);

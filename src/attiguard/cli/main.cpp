@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "attiguard/cli/campaign_command.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/reach_command.hpp"
 #include "attiguard/core/errors.hpp"
@@ -96,6 +97,30 @@ int run(int argc, char** argv) {
       ->type_name("DIR");
   reach_cmd->add_flag("--plot", reach_args.plot, "Also write PNG plots into DIR");
 
+  attiguard::cli::CampaignArguments campaign_args;  // issue 7: cli/campaign_command.cpp
+  CLI::App* campaign_cmd = app.add_subcommand(
+      "campaign",
+      "Monte Carlo campaign over the scenario's [dispersions]; write runs.csv and campaign.json "
+      "into DIR (under mpirun: runs split over the ranks)");
+  campaign_cmd->add_option("SCENARIO", campaign_args.scenario, "Scenario file with [dispersions]")
+      ->required()
+      ->type_name("FILE");
+  campaign_cmd->add_option("--runs", campaign_args.runs, "Number of runs N (runs 0..N-1)")
+      ->type_name("N");
+  campaign_cmd->add_option("--seed", campaign_args.seed, "Campaign seed S (default 1)")
+      ->type_name("S");
+  campaign_cmd->add_option("--out", campaign_args.out_dir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  campaign_cmd->add_option("--threads", campaign_args.threads, "Worker threads per process")
+      ->type_name("T");
+  campaign_cmd->add_option("--replay", campaign_args.replay,
+                           "Re-run run K alone with its full trajectory into DIR/run_K")
+      ->type_name("K");
+  campaign_cmd->add_flag("--resume", campaign_args.resume,
+                         "Keep the runs already in DIR/runs.csv and run the others");
+  campaign_cmd->add_flag("--plot", campaign_args.plot, "Also write histograms and scatter plots");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -110,9 +135,11 @@ int run(int argc, char** argv) {
     attiguard::cli::check_command(check_path);
   } else if (reach_cmd->parsed()) {
     attiguard::cli::reach_command(reach_args);
+  } else if (campaign_cmd->parsed()) {
+    attiguard::cli::campaign_command(campaign_args);
   } else {
     return fail(ExitCode::invalid_input,
-                "a subcommand is required: run, check or reach (see attiguard --help)");
+                "a subcommand is required: run, check, reach or campaign (see attiguard --help)");
   }
   return static_cast<int>(ExitCode::ok);
 }

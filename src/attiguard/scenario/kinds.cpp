@@ -1,14 +1,17 @@
 #include "attiguard/scenario/kinds.hpp"
 
 #include <array>
+#include <chrono>
 #include <string>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/mission_scenario.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/sim/mission_run.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/rigid_body_run.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
@@ -26,6 +29,14 @@ nlohmann::json run_rigid_body(const Document& doc, const RunOptions& options) {
 void check_pet_erg(const Document& doc) { (void)parse_pet_erg(doc); }
 
 nlohmann::json run_pet_erg(const Document& doc, const RunOptions& options) {
+  if (!options.write_files) {  // campaigns: the summary only, no file
+    const auto start = std::chrono::steady_clock::now();
+    const PetErgScenario sc = parse_pet_erg(doc);
+    const sim::PetErgResult result = sim::simulate_pet_erg(sc);
+    return sim::pet_erg_summary(
+        sc, result,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
   return sim::run_pet_erg(parse_pet_erg(doc), options.out_dir);
 }
 
@@ -33,6 +44,12 @@ void check_waypoint(const Document& doc) { (void)parse_waypoint(doc); }
 
 nlohmann::json run_waypoint(const Document& doc, const RunOptions& options) {
   return sim::run_waypoint(parse_waypoint(doc), options.out_dir);
+}
+
+void check_mission(const Document& doc) { (void)parse_mission(doc); }
+
+nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
+  return sim::run_mission(parse_mission(doc), options.out_dir);
 }
 
 void check_reach(const Document& doc) { (void)parse_reach(doc); }
@@ -43,7 +60,7 @@ nlohmann::json run_reach(const Document& doc, const RunOptions&) {
                                     doc.path.string() + " --out DIR`, not `attiguard run`");
 }
 
-constexpr std::array<KindHandler, 4> registry{{
+constexpr std::array<KindHandler, 5> registry{{
     {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
      &check_rigid_body, &run_rigid_body},
     {"pet_erg",
@@ -53,6 +70,10 @@ constexpr std::array<KindHandler, 4> registry{{
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",
      &check_waypoint, &run_waypoint},
+    {"mission",
+     "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
+     "slews; also flies the unconstrained twin",
+     &check_mission, &run_mission},
     {"reach",
      "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
      &check_reach, &run_reach},

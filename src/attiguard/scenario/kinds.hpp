@@ -15,6 +15,9 @@ namespace attiguard::scenario {
 /// Options common to every run.
 struct RunOptions {
   std::filesystem::path out_dir;  ///< created if missing; receives trajectory.csv, summary.json
+  /// false: campaigns (attiguard campaign) only need the summary; kinds that can simulate in
+  /// memory then write nothing (pet_erg), the others still write into out_dir (a scratch dir).
+  bool write_files{true};
 };
 
 /// One scenario kind.

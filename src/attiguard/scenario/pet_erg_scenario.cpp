@@ -56,30 +56,6 @@ double angle(const TableReader& t, const std::string& key, const NumberRule& rul
   return t.number(key, rule_rad);  // reports "missing required key" when neither is present
 }
 
-ConeConstraint parse_cone(const TableReader& t) {
-  declare(t, {"type", "axis_b", "direction_i", "half_angle", "half_angle_deg", "delta_offset",
-              "zeta_offset", "repulsive_gain"});
-  static constexpr std::array<std::string_view, 2> types{"keep_in", "keep_out"};
-  const std::string type = t.string_or("type", "keep_in", types);
-  const Vec3 axis_b = t.direction("axis_b");
-  const Vec3 direction_i = t.direction("direction_i");
-  const bool keep_in = type == "keep_in";
-  // keep_in: θ_c ∈ (0, π]; keep_out: α ∈ [0, π).
-  const NumberRule rule = keep_in ? NumberRule{0.0, std::numbers::pi, true, false}
-                                  : NumberRule{0.0, std::numbers::pi, false, true};
-  const double half_angle = angle(t, "half_angle", rule);
-  const double delta_offset = t.number_or("delta_offset", 0.05, NumberRule::positive());
-  const double zeta_offset = t.number_or("zeta_offset", 0.05, NumberRule::positive());
-  const double gain = t.number_or("repulsive_gain", 1.0, NumberRule::positive());
-  const ConeConstraint cone =
-      keep_in ? governor::keep_in_cone(axis_b, direction_i, half_angle, delta_offset, zeta_offset, gain)
-              : governor::keep_out_cone(axis_b, direction_i, half_angle, delta_offset, zeta_offset,
-                                        gain);
-  if (const auto err = governor::cone_error(cone)) {
-    t.fail(t.has("half_angle_deg") ? "half_angle_deg" : "half_angle", *err);
-  }
-  return cone;
-}
 
 /// Rejects a desired attitude that violates a cone or lies in a cone's repulsive band.
 void check_desired(const TableReader& t, std::string_view key, const Mat3& R_d,
@@ -140,6 +116,31 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
 }
 
 }  // namespace
+
+ConeConstraint parse_cone(const TableReader& t) {
+  declare(t, {"type", "axis_b", "direction_i", "half_angle", "half_angle_deg", "delta_offset",
+              "zeta_offset", "repulsive_gain"});
+  static constexpr std::array<std::string_view, 2> types{"keep_in", "keep_out"};
+  const std::string type = t.string_or("type", "keep_in", types);
+  const Vec3 axis_b = t.direction("axis_b");
+  const Vec3 direction_i = t.direction("direction_i");
+  const bool keep_in = type == "keep_in";
+  // keep_in: θ_c ∈ (0, π]; keep_out: α ∈ [0, π).
+  const NumberRule rule = keep_in ? NumberRule{0.0, std::numbers::pi, true, false}
+                                  : NumberRule{0.0, std::numbers::pi, false, true};
+  const double half_angle = angle(t, "half_angle", rule);
+  const double delta_offset = t.number_or("delta_offset", 0.05, NumberRule::positive());
+  const double zeta_offset = t.number_or("zeta_offset", 0.05, NumberRule::positive());
+  const double gain = t.number_or("repulsive_gain", 1.0, NumberRule::positive());
+  const ConeConstraint cone =
+      keep_in ? governor::keep_in_cone(axis_b, direction_i, half_angle, delta_offset, zeta_offset, gain)
+              : governor::keep_out_cone(axis_b, direction_i, half_angle, delta_offset, zeta_offset,
+                                        gain);
+  if (const auto err = governor::cone_error(cone)) {
+    t.fail(t.has("half_angle_deg") ? "half_angle_deg" : "half_angle", *err);
+  }
+  return cone;
+}
 
 const char* governor_mode_name(GovernorMode mode) noexcept {
   switch (mode) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/lie/so3.hpp"
@@ -41,5 +42,9 @@ struct PetErgScenario {
 ///   - an initial reference outside the field's domain (a_cᵀR_g(0)a_b ≤ δ);
 ///   - an initial state that is not admissible, V(R_0, ω_0, R_g(0)) > Γ(R_g(0)) (Theorem 1).
 [[nodiscard]] PetErgScenario parse_pet_erg(const Document& doc);
+
+/// One [[cones]] table: constraint (2b) of the PET-ERG paper, keep-in (θ_c) or keep-out (α,
+/// stored as the keep-in cone of π − α). Throws InputError. Shared with the `mission` kind.
+[[nodiscard]] governor::ConeConstraint parse_cone(const TableReader& t);
 
 }  // namespace attiguard::scenario

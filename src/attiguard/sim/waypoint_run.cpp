@@ -25,7 +25,8 @@ bool command_finite(const guidance::MissionCommand& c) noexcept {
 }  // namespace
 
 WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
-                                    const SampleObserver& observer) {
+                                    const SampleObserver& observer,
+                                    const CommandFilter& filter) {
   const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque);
   guidance::Mission mission(sc.mission, sc.gains, sc.waypoints_i);
   WaypointSimResult res;
@@ -68,6 +69,9 @@ WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
     in.dt = Ts;
     const int wp_before = mission.waypoint();
     cmd = mission.step(in);
+    if (filter) {
+      filter(t, s, cmd);
+    }
     ++res.samples;
     res.finite = res.finite && command_finite(cmd) && s.all_finite();
     res.max_torque_norm = std::max(res.max_torque_norm, plant.applied_torque(cmd.inputs.tau_b).norm());

@@ -57,8 +57,16 @@ using SampleObserver =
 
 /// Simulates the scenario; stops when the mission is done or at the duration. Throws
 /// NumericalError on divergence of the integrator.
+/// Replaces the attitude part of a sample's command before it is applied (the `mission` kind:
+/// the PET-ERG turns the guidance's R_d into the torque, sim/mission_run.cpp).
+using CommandFilter =
+    std::function<void(double t, const dynamics::SpacecraftState& y, guidance::MissionCommand& cmd)>;
+
+/// Simulates Algorithm 1 of the waypoint paper on the plant (3)-(5); `filter`, when set, may
+/// change each sample's command (torque, thrust) before the observer sees it and it is applied.
 [[nodiscard]] WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
-                                                  const SampleObserver& observer = {});
+                                                  const SampleObserver& observer = {},
+                                                  const CommandFilter& filter = {});
 
 /// Runs the scenario, writes out_dir/trajectory.csv (t, p_x..p_z, v_x..v_z, q_w..q_z,
 /// omega_x..omega_z, tau_x..tau_z, thrust, rct_1..rct_6, mode, waypoint) and

@@ -1,0 +1,34 @@
+/// @file scenario_reader_fuzz.cpp
+/// libFuzzer target for the scenario reader: TOML parsing (load path of every scenario), the
+/// kind registry and each kind's full validation (check), and campaign [dispersions].
+/// Any attiguard::Error is an expected rejection of bad input; anything else (another
+/// exception, a crash, a sanitizer report) is a bug.
+///   cmake -S . -B build-fuzz -DATTIGUARD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++
+///   build-fuzz/fuzz/scenario_reader_fuzz -max_total_time=60 fuzz/corpus
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/kinds.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  try {
+    const attiguard::scenario::Document doc =
+        attiguard::scenario::parse_document(text, "fuzz.toml");
+    if (doc.root.contains("dispersions")) {
+      (void)attiguard::campaign::read_dispersions(doc);
+      const auto nominal = attiguard::campaign::nominal_document(doc);
+      attiguard::scenario::handler_for(nominal).check(nominal);
+    } else {
+      attiguard::scenario::handler_for(doc).check(doc);
+    }
+  } catch (const attiguard::Error&) {
+    // invalid input, reported with a located message: expected
+  }
+  return 0;
+}

@@ -1,0 +1,162 @@
+"""Plots of `attiguard campaign` (docs/campaigns.md).
+
+Reads DIR/runs.csv and DIR/campaign.json and writes:
+
+- ``campaign_histograms.png``: histograms, over the runs with status ok, of the margins and the
+  main figures (min_pointing_margin, max_torque_norm, final_attitude_error, delta_v, ...: the
+  first of a preferred list present in runs.csv, then other varying figures);
+- ``campaign_scatter.png``: the first margin against each dispersed value (one panel per
+  dispersed column, at most 12), violating runs in red.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import PlotInputError
+from .common import DPI
+
+_PREFERRED = (
+    "min_pointing_margin", "max_torque_norm", "final_attitude_error", "max_V_minus_Gamma",
+    "total_delta_v", "delta_v", "final_omega_norm", "final_attitude_error_rad",
+    "max_energy_drift_rel",
+)
+_MAX_PANELS = 12
+
+
+@dataclass
+class CampaignRun:
+    """runs.csv as columns (floats, NaN where empty) and campaign.json."""
+
+    dir: Path
+    header: list[str]
+    status: list[str]
+    columns: dict[str, np.ndarray] = field(default_factory=dict)
+    summary: dict = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        return str(self.summary.get("scenario") or self.dir.name)
+
+
+def _float(x: str) -> float:
+    try:
+        return float(x)
+    except ValueError:
+        return math.nan
+
+
+def load(directory: Path) -> CampaignRun:
+    directory = Path(directory)
+    path = directory / "runs.csv"
+    try:
+        with path.open(newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        raise PlotInputError(f"{path}: cannot read ({e.strerror})") from None
+    if len(rows) < 2:
+        raise PlotInputError(f"{path}: no runs")
+    header = rows[0]
+    body = [r for r in rows[1:] if len(r) == len(header)]
+    columns = {name: np.array([_float(r[i]) for r in body]) for i, name in enumerate(header)}
+    summary = {}
+    try:
+        summary = json.loads((directory / "campaign.json").read_text())
+    except (OSError, ValueError):
+        pass
+    return CampaignRun(directory, header, [r[header.index("status")] for r in body], columns,
+                       summary)
+
+
+def _figures(run: CampaignRun) -> list[str]:
+    start = run.header.index("violation") + 1
+    figures = [h for h in run.header[start:]]
+    ok = np.array([s == "ok" for s in run.status])
+    varying = [h for h in figures
+               if np.isfinite(run.columns[h][ok]).any() and np.nanstd(run.columns[h][ok]) > 0]
+    ordered = [h for h in _PREFERRED if h in varying]
+    ordered += [h for h in varying if h not in ordered and "margin" in h]
+    ordered += [h for h in varying if h not in ordered]
+    return ordered[:_MAX_PANELS]
+
+
+def _dispersed(run: CampaignRun) -> list[str]:
+    start = run.header.index("reason") + 1
+    stop = run.header.index("violation")
+    return [h for h in run.header[start:stop] if np.nanstd(run.columns[h]) > 0][:_MAX_PANELS]
+
+
+def _grid(n: int):
+    from matplotlib.figure import Figure
+
+    cols = min(3, max(1, n))
+    rows = max(1, math.ceil(n / cols))
+    fig = Figure(figsize=(4.0 * cols, 3.0 * rows), dpi=DPI)
+    axes = fig.subplots(rows, cols, squeeze=False).ravel()
+    for ax in axes[n:]:
+        ax.set_visible(False)
+    return fig, axes
+
+
+def histograms(run: CampaignRun) -> Path:
+    ok = np.array([s == "ok" for s in run.status])
+    names = _figures(run)
+    fig, axes = _grid(max(1, len(names)))
+    for ax, name in zip(axes, names):
+        values = run.columns[name][ok]
+        values = values[np.isfinite(values)]
+        ax.hist(values, bins=40, color="tab:blue", alpha=0.8)
+        if "margin" in name:
+            ax.axvline(0.0, color="tab:red", lw=1.0)
+        ax.set_xlabel(name)
+        ax.set_ylabel("runs")
+        ax.grid(True, alpha=0.4)
+    fig.suptitle(f"{run.name}: {int(ok.sum())} runs ok, violations: "
+                 f"{run.summary.get('violations', '?')}")
+    path = run.dir / "campaign_histograms.png"
+    fig.tight_layout()
+    fig.savefig(path)
+    return path
+
+
+def scatter(run: CampaignRun) -> Path | None:
+    ok = np.array([s == "ok" for s in run.status])
+    figures = _figures(run)
+    margins = [f for f in figures if "margin" in f] or figures
+    if not margins:
+        return None
+    margin = margins[0]
+    params = _dispersed(run)
+    fig, axes = _grid(max(1, len(params)))
+    violation = run.columns["violation"] == 1.0
+    for ax, p in zip(axes, params):
+        ax.scatter(run.columns[p][ok & ~violation], run.columns[margin][ok & ~violation], s=3,
+                   color="tab:blue", label="ok")
+        if (ok & violation).any():
+            ax.scatter(run.columns[p][ok & violation], run.columns[margin][ok & violation], s=6,
+                       color="tab:red", label="violation")
+        ax.set_xlabel(p)
+        ax.set_ylabel(margin)
+        ax.grid(True, alpha=0.4)
+    fig.suptitle(f"{run.name}: {margin} against the dispersed values")
+    path = run.dir / "campaign_scatter.png"
+    fig.tight_layout()
+    fig.savefig(path)
+    return path
+
+
+def plot(run: CampaignRun) -> list[Path]:
+    written = [histograms(run)]
+    s = scatter(run)
+    if s is not None:
+        written.append(s)
+    return written
+
+
+plot.load = load  # type: ignore[attr-defined]  # __main__ loads runs.csv, not trajectory.csv

@@ -1,0 +1,21 @@
+#pragma once
+/// @file bindings.hpp
+/// The parts of the Python extension module `attiguard._core` (docs/python.md), one per file.
+
+#include <pybind11/pybind11.h>
+
+namespace attiguard::python {
+
+/// attiguard::Error and its subclasses as Python exceptions with the CLI's messages
+/// (docs/conventions.md, "Exit codes").
+void bind_errors(pybind11::module_& m);
+/// SO(3) and quaternion helpers (conventions: hat, exp, log, φ, d; waypoint paper eqs. (1), (12)).
+void bind_lie(pybind11::module_& m);
+/// Scenario runs: `attiguard run` / `check` / `reach` on a file or on TOML text.
+void bind_run(pybind11::module_& m);
+/// PET-ERG governor (PET-ERG paper eqs. (3)-(6)), PD law (3) and the rigid body.
+void bind_governor(pybind11::module_& m);
+/// Waypoint guidance (waypoint paper Algorithm 1) and the quaternion PID (27).
+void bind_guidance(pybind11::module_& m);
+
+}  // namespace attiguard::python

@@ -1,0 +1,168 @@
+"""Tests of the Python package `attiguard` (the pybind11 bindings, docs/python.md)."""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import attiguard as ag
+
+REPO = Path(__file__).resolve().parents[2]
+EXAMPLES = REPO / "examples"
+BUILD = Path(os.environ.get("ATTIGUARD_BUILD_DIR", REPO / "build")).resolve()
+
+
+def load(name: str) -> dict:
+    return tomllib.loads((EXAMPLES / name).read_text())
+
+
+# ---- SO(3) / quaternion helpers ---------------------------------------------------------------
+
+def test_exp_log_round_trip_and_hat_vee():
+    w = np.array([0.3, -1.1, 0.7])
+    R = ag.expm(w)
+    assert ag.is_rotation(R)
+    np.testing.assert_allclose(ag.logm(R), w, atol=1e-12)
+    np.testing.assert_allclose(ag.hat(w) @ np.array([1.0, 2.0, 3.0]), np.cross(w, [1.0, 2.0, 3.0]))
+    np.testing.assert_allclose(ag.vee(ag.hat(w)), w)
+    assert ag.distance(np.eye(3), R) == pytest.approx(np.linalg.norm(w))
+    assert ag.phi(R) == pytest.approx(1.0 - math.cos(np.linalg.norm(w)))
+
+
+def test_quaternion_conventions_scalar_first_hamilton():
+    q = ag.quat_from_axis_angle([0.0, 0.0, 1.0], math.pi / 2)
+    np.testing.assert_allclose(q, [math.cos(math.pi / 4), 0, 0, math.sin(math.pi / 4)])
+    R = ag.quat_to_rotation(q)
+    np.testing.assert_allclose(R @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], atol=1e-15)
+    np.testing.assert_allclose(R, ag.expm([0.0, 0.0, math.pi / 2]), atol=1e-15)
+    qq = ag.quat_multiply(q, q)
+    np.testing.assert_allclose(ag.quat_to_rotation(qq), ag.expm([0.0, 0.0, math.pi]), atol=1e-12)
+    np.testing.assert_allclose(ag.rotation_to_quat(R), q, atol=1e-15)
+    np.testing.assert_allclose(ag.quat_multiply(q, ag.quat_conjugate(q)), [1, 0, 0, 0], atol=1e-15)
+
+
+# ---- run(): files and dicts -------------------------------------------------------------------
+
+def short_pet_erg(duration: float = 10.0) -> dict:
+    sc = load("pet_erg_paper.toml")
+    sc["simulation"]["duration"] = duration
+    sc["simulation"]["output_interval"] = 0.05
+    return sc
+
+
+def test_run_dict_returns_numpy_series_and_summary():
+    res = ag.run(short_pet_erg())
+    assert res.kind == "pet_erg"
+    t = res["t"]
+    assert isinstance(t, np.ndarray) and t[0] == 0.0 and t[-1] == pytest.approx(10.0)
+    for col in ("q_w", "q_x", "q_y", "q_z", "omega_x", "tau_norm", "V", "gamma", "margin_0"):
+        assert res[col].shape == t.shape
+    s = res.summary
+    assert s["min_pointing_margin"] >= 0.0
+    assert s["max_torque_norm"] <= 2.5
+    assert np.min(res["margin_0"]) >= 0.0
+    assert "wall_time_s" in s
+
+
+def test_run_path_matches_dict(tmp_path):
+    sc = short_pet_erg(5.0)
+    path = tmp_path / "short.toml"
+    path.write_text(ag.to_toml(sc))
+    a = ag.run(path, out=tmp_path / "out")
+    b = ag.run(sc)
+    assert (tmp_path / "out" / "summary.json").is_file()
+    assert a.summary["min_pointing_margin"] == b.summary["min_pointing_margin"]
+    np.testing.assert_array_equal(a["tau_norm"], b["tau_norm"])
+
+
+def test_check_returns_kind():
+    assert ag.check(EXAMPLES / "waypoint_paper.toml") == "waypoint"
+    assert ag.check(load("rigid_body_pd.toml")) == "rigid_body"
+
+
+# ---- errors: same messages as the CLI ---------------------------------------------------------
+
+def test_input_error_from_file_has_the_cli_message():
+    bad = EXAMPLES / "bad" / "typo_key.toml"
+    with pytest.raises(ag.InputError) as info:
+        ag.run(bad)
+    message = str(info.value)
+    assert "kpp" in message and str(bad) in message
+    assert info.value.exit_code == 2 and isinstance(info.value, ag.Error)
+    cli = BUILD / "src" / "attiguard"
+    if cli.is_file():
+        proc = subprocess.run([str(cli), "check", str(bad)], capture_output=True, text=True)
+        assert proc.returncode == 2
+        assert proc.stderr.strip() == f"attiguard: error: {message}"
+
+
+def test_input_error_from_dict_names_the_key():
+    sc = short_pet_erg()
+    sc["control"]["tau_max"] = -1.0
+    with pytest.raises(ag.InputError, match=r"<dict>.*tau_max"):
+        ag.run(sc)
+    with pytest.raises(ag.InputError, match="nan"):
+        ag.check({**short_pet_erg(), "erg": {**short_pet_erg()["erg"], "kappa": float("nan")}})
+    with pytest.raises(TypeError):
+        ag.run(42)
+
+
+# ---- step-able objects: close the loop in Python ----------------------------------------------
+
+def test_governor_closed_loop_in_python_keeps_the_constraints():
+    J = np.diag([1.0, 2.0, 3.0])
+    cone = ag.keep_in_cone([0, 0, 1], [-0.791, 0.061, -0.609], math.radians(160.0))
+    gov = ag.Governor(J, kp=5.0, kd=1.0, tau_max=2.5, cones=[cone], Ts=0.5)
+    body = ag.RigidBody(J)
+    R, w = np.eye(3), np.array([0.2, 0.3, 0.4])
+    R_d = ag.expm([0.0, math.pi / 2, 0.0])
+    gov.reset(0.0, R)
+    dt, worst_margin, worst_tau, holds = 0.005, math.inf, 0.0, 0
+    for k in range(int(20.0 / dt)):
+        out = gov.step(k * dt, R, w, R_d)
+        worst_margin = min(worst_margin, cone.margin(R))
+        worst_tau = max(worst_tau, float(np.linalg.norm(out.tau_b)))
+        holds += not out.trigger
+        # semi-implicit Lie-Euler step of Ṙ = R ω̂, J ω̇ = Jω × ω + τ
+        w = w + dt * body.angular_acceleration(w, out.tau_b)
+        R = R @ ag.expm(dt * w)
+    assert worst_margin >= 0.0
+    assert worst_tau <= 2.5 + 1e-9
+    assert holds > 0
+    assert gov.gamma_d > 0.0
+    assert ag.distance(gov.reference, R_d) < ag.distance(np.eye(3), R_d)
+
+
+def test_mission_and_pid_step():
+    m = ag.Mission([[100.0, 0.0, 0.0]])
+    cmd = m.step(ag.expm([0.0, 0.0, 0.5]), np.zeros(3), np.zeros(3), np.zeros(3), 0.1)
+    assert cmd["mode"] == "align" and cmd["thrust"] == 0.0
+    np.testing.assert_allclose(cmd["R_d"] @ [1.0, 0.0, 0.0], [1.0, 0.0, 0.0], atol=1e-9)
+    pid = ag.QuaternionPid(kp=20.0, ki=0.0, kd=20.0)
+    tau = pid.step([1.0, 0.0, 0.0, 0.0], np.zeros(3), ag.quat_from_axis_angle([0, 0, 1], 0.2),
+                   np.zeros(3), 0.1)
+    assert tau[2] > 0.0
+
+
+def test_governor_rejects_bad_parameters():
+    with pytest.raises(ValueError):
+        ag.Governor(np.diag([1.0, 2.0, 3.0]), tau_max=-1.0)
+
+
+# ---- reach(): the balls -----------------------------------------------------------------------
+
+def test_reach_returns_the_balls():
+    sc = load("conreach_pd.toml")
+    sc["reach"]["steps"] = 5
+    sc["reach"]["horizon"] = 0.5
+    sc["soundness"]["samples"] = 50
+    res = ag.reach(sc)
+    assert res.verdict == "safe"
+    assert len(res.balls["r"]) == 5
+    assert np.all(res.balls["r"] > 0.0)

@@ -1,0 +1,308 @@
+#include "attiguard/campaign/dispersion.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string_view>
+
+#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/lie/so3.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::campaign {
+
+namespace {
+
+using lie::Mat3;
+using lie::Vec3;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+/// Reads one `[dispersions]` entry.
+Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
+                      const scenario::Document& nominal) {
+  Dispersion d;
+  d.key = key;
+  static constexpr std::array<std::string_view, 5> kTypes{"number", "vector", "inertia",
+                                                          "attitude", "direction"};
+  const std::string type = t.string_or("type", "number", kTypes);
+  const auto pos = resolve_key_path(nominal.root, key);
+  if (!pos) t.fail_here("no value at key path '" + key + "' in the scenario");
+  const toml::node& value = *pos;
+  auto is_number = [](const toml::node& n) { return n.is_floating_point() || n.is_integer(); };
+  auto is_vector3 = [&](const toml::node& n) {
+    const toml::array* a = n.as_array();
+    if (a == nullptr || a->size() != 3) return false;
+    for (const auto& e : *a) {
+      if (!is_number(e)) return false;
+    }
+    return true;
+  };
+  if (type == "number" || type == "vector") {
+    d.type = type == "number" ? DispersionType::number : DispersionType::vector;
+    if (d.type == DispersionType::number && !is_number(value)) {
+      t.fail_here("'" + key + "' is not a number in the scenario");
+    }
+    if (d.type == DispersionType::vector) {
+      const toml::array* a = value.as_array();
+      bool ok = a != nullptr && !a->empty();
+      if (ok) {
+        for (const auto& e : *a) ok = ok && is_number(e);
+      }
+      if (!ok) t.fail_here("'" + key + "' is not an array of numbers in the scenario");
+    }
+    static constexpr std::array<std::string_view, 3> kDist{"uniform", "normal",
+                                                           "truncated_normal"};
+    const std::string dist = t.string("distribution", kDist);
+    d.distribution = dist == "uniform"  ? Distribution::uniform
+                     : dist == "normal" ? Distribution::normal
+                                        : Distribution::truncated_normal;
+    const bool has_min = t.has("min");
+    const bool has_max = t.has("max");
+    const bool has_delta = t.has("delta");
+    if (has_min != has_max) t.fail_here("give both 'min' and 'max' or neither");
+    d.has_bounds = has_min;
+    if (d.has_bounds) {
+      d.min = t.number("min");
+      d.max = t.number("max");
+      if (!(d.min < d.max)) t.fail("max", "must be greater than min");
+    }
+    if (has_delta) d.delta = t.number("delta", scenario::NumberRule::positive());
+    if (d.has_bounds && has_delta) t.fail("delta", "give either min/max or delta, not both");
+    if (d.distribution != Distribution::normal && !d.has_bounds && !has_delta) {
+      t.fail_here("a " + dist + " dispersion needs 'min' and 'max' or 'delta'");
+    }
+    if (d.distribution == Distribution::normal && (d.has_bounds || has_delta)) {
+      t.fail_here("a normal dispersion has no bounds (use truncated_normal)");
+    }
+    if (d.distribution != Distribution::uniform) {
+      d.sigma = t.number("sigma", scenario::NumberRule::positive());
+      d.has_mean = t.has("mean");
+      if (d.has_mean) d.mean = t.number("mean");
+    }
+  } else if (type == "inertia") {
+    d.type = DispersionType::inertia;
+    d.moments_rel_sigma = t.number_or("moments_rel_sigma", 0.0, scenario::NumberRule::range(0.0, 0.3));
+    d.axes_max_angle = kDeg * t.number_or("axes_max_angle_deg", 0.0,
+                                          scenario::NumberRule::range(0.0, 180.0));
+  } else if (type == "attitude") {
+    d.type = DispersionType::attitude;
+    static constexpr std::array<std::string_view, 2> kModes{"uniform", "ball"};
+    d.attitude_mode = t.string("mode", kModes) == "uniform" ? AttitudeMode::uniform
+                                                             : AttitudeMode::ball;
+    if (d.attitude_mode == AttitudeMode::ball) {
+      d.max_angle = kDeg * t.number("max_angle_deg", {0.0, 180.0, true, false});
+    }
+    if (!value.is_table()) t.fail_here("'" + key + "' is not a rotation table in the scenario");
+  } else {
+    d.type = DispersionType::direction;
+    if (!is_vector3(value)) t.fail_here("'" + key + "' is not a 3-vector in the scenario");
+    d.half_angle = kDeg * t.number("half_angle_deg", {0.0, 180.0, true, false});
+  }
+  return d;
+}
+
+double as_double(const toml::node& n) { return n.value<double>().value_or(0.0); }
+
+/// A scalar draw around `nominal`.
+double draw_scalar(const Dispersion& d, double nominal, Rng& rng) {
+  const double mean = d.has_mean ? d.mean : nominal;
+  const double lo = d.has_bounds ? d.min : nominal - d.delta;
+  const double hi = d.has_bounds ? d.max : nominal + d.delta;
+  switch (d.distribution) {
+    case Distribution::uniform:
+      return rng.uniform(lo, hi);
+    case Distribution::normal:
+      return mean + d.sigma * rng.normal();
+    case Distribution::truncated_normal:
+      for (int i = 0; i < 10000; ++i) {
+        const double x = mean + d.sigma * rng.normal();
+        if (x >= lo && x <= hi) return x;
+      }
+      return std::clamp(mean, lo, hi);
+  }
+  return nominal;
+}
+
+/// A unit vector uniform on the sphere.
+Vec3 unit_vector(Rng& rng) {
+  const double z = rng.uniform(-1.0, 1.0);
+  const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+/// A rotation vector uniform (Haar measure) within the geodesic ball of radius max_angle.
+Vec3 ball_rotation(double max_angle, Rng& rng) {
+  const double norm = 1.0 - std::cos(max_angle);
+  for (int i = 0; i < 100000; ++i) {
+    const double theta = rng.uniform(0.0, max_angle);
+    if (rng.uniform01() * norm <= 1.0 - std::cos(theta)) return theta * unit_vector(rng);
+  }
+  return Vec3::Zero();
+}
+
+/// A unit vector uniform on the cap of half-angle `alpha` around the unit vector `n`.
+Vec3 cap_vector(const Vec3& n, double alpha, Rng& rng) {
+  const double c = 1.0 - rng.uniform01() * (1.0 - std::cos(alpha));
+  const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+  const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
+  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 e1 = n.cross(helper).normalized();
+  const Vec3 e2 = n.cross(e1);
+  return (c * n + s * (std::cos(phi) * e1 + std::sin(phi) * e2)).normalized();
+}
+
+toml::array array3(const Vec3& v) { return toml::array{v(0), v(1), v(2)}; }
+
+/// Reads the nominal rotation or inertia with the scenario's own readers.
+scenario::TableReader single_value_reader(const scenario::Document& holder) {
+  return scenario::TableReader(holder);
+}
+
+scenario::Document holder_of(const scenario::Document& nominal, const toml::node& value) {
+  scenario::Document h{nominal.path, toml::table{}};
+  h.root.insert("value", value);
+  return h;
+}
+
+}  // namespace
+
+scenario::Document nominal_document(const scenario::Document& doc) {
+  scenario::Document nominal{doc.path, doc.root};
+  nominal.root.erase("dispersions");
+  nominal.root.erase("campaign");
+  return nominal;
+}
+
+DispersionPlan read_dispersions(const scenario::Document& doc) {
+  const scenario::Document nominal = nominal_document(doc);
+  scenario::TableReader root(doc);
+  DispersionPlan plan;
+  const scenario::TableReader table = root.table("dispersions");
+  const toml::table* raw = doc.root["dispersions"].as_table();
+  if (raw->empty()) table.fail_here("[dispersions] must list at least one dispersed value");
+  for (const auto& [k, v] : *raw) {
+    (void)v;
+    const std::string key(k.str());
+    plan.items.push_back(read_entry(table.table(key), key, nominal));
+  }
+  if (const auto c = root.optional_table("campaign")) {
+    plan.max_attempts = c->integer_or("max_attempts", 1, 1, 1000000);
+  }
+  table.finish();
+  if (const auto c = root.optional_table("campaign")) c->finish();
+  return plan;
+}
+
+std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
+  std::vector<std::string> cols;
+  for (const Dispersion& d : plan.items) {
+    switch (d.type) {
+      case DispersionType::number:
+        cols.push_back(d.key);
+        break;
+      case DispersionType::vector:
+        cols.push_back(d.key + "[0]");
+        cols.push_back(d.key + "[1]");
+        cols.push_back(d.key + "[2]");
+        break;
+      case DispersionType::inertia:
+        for (const char* s : {".J11", ".J22", ".J33", ".J12", ".J13", ".J23"}) cols.push_back(d.key + s);
+        break;
+      case DispersionType::attitude:
+        for (const char* s : {".q_w", ".q_x", ".q_y", ".q_z"}) cols.push_back(d.key + s);
+        break;
+      case DispersionType::direction:
+        for (const char* s : {".x", ".y", ".z"}) cols.push_back(d.key + s);
+        break;
+    }
+  }
+  return cols;
+}
+
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
+                       toml::table& root, std::vector<double>& values) {
+  for (const Dispersion& d : plan.items) {
+    const toml::node* nom = resolve_key_path(nominal.root, d.key);
+    if (nom == nullptr) throw InputError(nominal.path.string() + ": no value at '" + d.key + "'");
+    switch (d.type) {
+      case DispersionType::number: {
+        const double x = draw_scalar(d, as_double(*nom), rng);
+        values.push_back(x);
+        assign_key_path(root, d.key, toml::value<double>(x));
+        break;
+      }
+      case DispersionType::vector: {
+        toml::array out;
+        const toml::array& a = *nom->as_array();
+        for (std::size_t i = 0; i < a.size(); ++i) {
+          const double x = draw_scalar(d, as_double(*a.get(i)), rng);
+          if (i < 3) values.push_back(x);
+          out.push_back(x);
+        }
+        for (std::size_t i = a.size(); i < 3; ++i) values.push_back(0.0);
+        assign_key_path(root, d.key, std::move(out));
+        break;
+      }
+      case DispersionType::inertia: {
+        const scenario::Document h = holder_of(nominal, *nom);
+        const Mat3 J0 = single_value_reader(h).inertia("value");
+        const Eigen::SelfAdjointEigenSolver<Mat3> eig(J0);
+        Mat3 J = J0;
+        for (int attempt = 0; attempt < 10000; ++attempt) {
+          Vec3 m = eig.eigenvalues();
+          for (int i = 0; i < 3; ++i) {
+            double g = rng.normal();
+            while (std::abs(g) > 3.0) g = rng.normal();
+            m(i) *= 1.0 + d.moments_rel_sigma * g;
+          }
+          Mat3 Q = eig.eigenvectors();
+          if (d.axes_max_angle > 0.0) Q = Q * lie::exp(ball_rotation(d.axes_max_angle, rng));
+          J = Q * m.asDiagonal() * Q.transpose();
+          J = 0.5 * (J + J.transpose());
+          if (!dynamics::inertia_error(J)) break;
+        }
+        values.insert(values.end(), {J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2)});
+        toml::array rows;
+        for (int r = 0; r < 3; ++r) rows.push_back(array3(J.row(r).transpose()));
+        assign_key_path(root, d.key, std::move(rows));
+        break;
+      }
+      case DispersionType::attitude: {
+        const scenario::Document h = holder_of(nominal, *nom);
+        const Mat3 R0 = single_value_reader(h).rotation("value");
+        Mat3 R;
+        if (d.attitude_mode == AttitudeMode::uniform) {
+          Eigen::Vector4d q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+          q.normalize();
+          R = lie::quat_to_rotation(q);
+        } else {
+          R = R0 * lie::exp(ball_rotation(d.max_angle, rng));
+        }
+        lie::Quat q = lie::rotation_to_quat(R);
+        q.normalize();
+        values.insert(values.end(), {q(0), q(1), q(2), q(3)});
+        toml::table t;
+        t.insert("quaternion", toml::array{q(0), q(1), q(2), q(3)});
+        assign_key_path(root, d.key, std::move(t));
+        break;
+      }
+      case DispersionType::direction: {
+        const toml::array& a = *nom->as_array();
+        const Vec3 n0 = Vec3(as_double(*a.get(0)), as_double(*a.get(1)), as_double(*a.get(2)));
+        const Vec3 n = cap_vector(n0.normalized(), d.half_angle, rng);
+        values.insert(values.end(), {n(0), n(1), n(2)});
+        assign_key_path(root, d.key, array3(n));
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace attiguard::campaign

@@ -1,0 +1,75 @@
+#pragma once
+/// @file dispersion.hpp
+/// The `[dispersions]` table of a campaign scenario (docs/campaigns.md): what to disperse, how,
+/// and its application to a copy of the scenario's TOML table.
+///
+///   [dispersions]
+///   "control.kp"           = { distribution = "uniform", min = 4.0, max = 6.0 }
+///   "initial.omega_b"      = { type = "vector", distribution = "truncated_normal",
+///                              sigma = 0.05, delta = 0.1 }
+///   "body.inertia"         = { type = "inertia", moments_rel_sigma = 0.1, axes_max_angle_deg = 5 }
+///   "initial.attitude"     = { type = "attitude", mode = "ball", max_angle_deg = 20 }
+///   "cones[0].direction_i" = { type = "direction", half_angle_deg = 5 }
+
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "attiguard/campaign/seed.hpp"
+#include "attiguard/scenario/document.hpp"
+
+namespace attiguard::campaign {
+
+/// What a dispersion changes.
+enum class DispersionType { number, vector, inertia, attitude, direction };
+/// Distribution of a scalar (number, and each component of a vector).
+enum class Distribution { uniform, normal, truncated_normal };
+/// Attitude dispersion: uniform on SO(3), or uniform within a geodesic ball around the nominal.
+enum class AttitudeMode { uniform, ball };
+
+/// One entry of `[dispersions]`.
+struct Dispersion {
+  std::string key;  ///< key path in the scenario, e.g. "cones[0].direction_i"
+  DispersionType type{DispersionType::number};
+  Distribution distribution{Distribution::uniform};
+  // number / vector: absolute bounds (uniform, truncated_normal) or ± delta around the nominal
+  bool has_bounds{false};
+  double min{0.0}, max{0.0};
+  double delta{0.0};       ///< half-width around the nominal (when no min/max)
+  bool has_mean{false};
+  double mean{0.0};        ///< normal mean (default: the nominal value)
+  double sigma{0.0};       ///< normal standard deviation
+  // inertia
+  double moments_rel_sigma{0.0};   ///< relative σ of each principal moment (truncated at 3σ)
+  double axes_max_angle{0.0};      ///< rad: principal axes rotated within this geodesic ball
+  // attitude
+  AttitudeMode attitude_mode{AttitudeMode::ball};
+  double max_angle{0.0};           ///< rad (attitude ball)
+  // direction
+  double half_angle{0.0};          ///< rad: uniform on the spherical cap around the nominal
+};
+
+/// The parsed dispersions of a campaign and the scenario they apply to.
+struct DispersionPlan {
+  std::vector<Dispersion> items;   ///< in the order of the file (toml++ keeps keys sorted)
+  long max_attempts{1};            ///< [campaign] max_attempts: draws until admissible
+};
+
+/// Reads `[dispersions]` (required, non-empty) and `[campaign]` (optional) of `doc`, checks every
+/// key path exists in the scenario with a value of the right shape; throws InputError located
+/// at the offending key.
+[[nodiscard]] DispersionPlan read_dispersions(const scenario::Document& doc);
+
+/// The scenario without its `[dispersions]` and `[campaign]` tables (what the kind validates).
+[[nodiscard]] scenario::Document nominal_document(const scenario::Document& doc);
+
+/// Names of the columns of the dispersed values, in order (e.g. "initial.omega_b[0]").
+[[nodiscard]] std::vector<std::string> dispersion_columns(const DispersionPlan& plan);
+
+/// Draws every dispersion from `rng` and writes the dispersed values into `root` (the nominal
+/// document's table); appends the drawn values (dispersion_columns order) to `values`.
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
+                       toml::table& root, std::vector<double>& values);
+
+}  // namespace attiguard::campaign

@@ -1,0 +1,180 @@
+/// @file campaign_command.cpp
+/// `attiguard campaign`: Monte Carlo runs of a scenario with dispersions, on threads and MPI
+/// ranks, with results identical to a serial campaign byte for byte.
+
+#include "attiguard/cli/campaign_command.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "attiguard/campaign/aggregation.hpp"
+#include "attiguard/campaign/csv_format.hpp"
+#include "attiguard/campaign/mpi_split.hpp"
+#include "attiguard/campaign/progress.hpp"
+#include "attiguard/campaign/runner.hpp"
+#include "attiguard/campaign/runs_file.hpp"
+#include "attiguard/cli/commands.hpp"
+#include "attiguard/core/errors.hpp"
+
+namespace attiguard::cli {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void on_sigint(int) { g_stop.store(true); }
+
+std::string join(const std::vector<std::string>& cols) {
+  std::string s;
+  for (const auto& c : cols) s += (s.empty() ? "" : ",") + c;
+  return s;
+}
+
+void make_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir.string() + ": cannot create output directory");
+  }
+}
+
+/// `--replay K`: run K again with its full trajectory in DIR/run_K.
+void replay(const campaign::Campaign& c, const CampaignArguments& args) {
+  const long k = *args.replay;
+  const std::filesystem::path dir = args.out_dir / ("run_" + std::to_string(k));
+  make_dir(dir);
+  scenario::RunOptions options;
+  options.out_dir = dir;
+  options.write_files = true;
+  const campaign::RunRecord r = campaign::run_one(c, k, options);
+  const std::string header = join(campaign::csv_columns(c));
+  const std::string row = campaign::csv_row(c, r);
+  std::ofstream(dir / "run.csv", std::ios::binary) << header << '\n' << row << '\n';
+  std::cout << "Replayed run " << k << " (seed " << r.seed << "): " << campaign::status_name(r.status)
+            << (r.reason.empty() ? "" : " (" + r.reason + ")") << '\n';
+  const auto existing = campaign::read_runs(args.out_dir / "runs.csv", header);
+  if (const auto it = existing.find(k); it != existing.end()) {
+    std::cout << (it->second == row ? "  identical to its row in runs.csv\n"
+                                    : "  DIFFERS from its row in runs.csv\n");
+  }
+  std::cout << "Wrote:\n  " << (dir / "run.csv").string() << '\n';
+  for (const char* f : {"trajectory.csv", "summary.json"}) {
+    if (std::filesystem::exists(dir / f)) std::cout << "  " << (dir / f).string() << '\n';
+  }
+  if (args.plot && r.status == campaign::RunStatus::ok) {
+    const PlotOutcome p = plot_results(std::string(c.handler->name), dir);
+    for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
+  }
+}
+
+}  // namespace
+
+void campaign_command(const CampaignArguments& args) {
+  const campaign::World world = campaign::mpi_world();
+  if (args.threads < 1) throw InputError("--threads: must be at least 1");
+  if (!args.replay && args.runs < 1) throw InputError("--runs: must be at least 1");
+  if (args.replay && *args.replay < 0) throw InputError("--replay: must be a run index >= 0");
+  make_dir(args.out_dir);
+  const std::filesystem::path scratch =
+      args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));
+  const campaign::Campaign c = campaign::load_campaign(args.scenario, args.seed, scratch);
+  if (args.replay) {
+    if (world.root()) replay(c, args);
+    return;
+  }
+
+  const std::string header = join(campaign::csv_columns(c));
+  const std::filesystem::path runs_path = args.out_dir / "runs.csv";
+  std::map<long, std::string> done;
+  if (args.resume) {
+    for (auto& [k, line] : campaign::read_runs(runs_path, header)) {
+      if (k < args.runs) done.emplace(k, std::move(line));
+    }
+  }
+  campaign::barrier(world);
+  std::vector<long> todo;
+  for (long k = 0; k < args.runs; ++k) {
+    if (!done.contains(k)) todo.push_back(k);
+  }
+  const std::vector<long> share = campaign::rank_share(todo, world);
+
+  std::optional<campaign::RunsAppender> appender;
+  if (world.root()) {
+    if (!args.resume) std::filesystem::remove(runs_path);
+    if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
+    appender.emplace(runs_path, header);
+    std::cout << "Campaign " << args.scenario.string() << " (" << c.handler->name << "): "
+              << args.runs << " runs, seed " << args.seed << ", " << done.size()
+              << " already done, " << todo.size() << " to run on " << world.size << " rank(s) x "
+              << args.threads << " thread(s)\n"
+              << std::flush;
+  }
+
+  g_stop.store(false);
+  const auto previous = std::signal(SIGINT, on_sigint);
+  const auto start = std::chrono::steady_clock::now();
+  campaign::Progress progress(std::cout, static_cast<long>(share.size()),
+                              world.root() && ::isatty(STDOUT_FILENO) == 1);
+  std::map<long, std::string> mine;
+  campaign::run_many(c, share, args.threads, scratch, g_stop, [&](const campaign::RunRecord& r) {
+    std::string row = campaign::csv_row(c, r);
+    if (appender) appender->append(row);
+    mine.emplace(r.index, std::move(row));
+    if (world.root()) progress.tick();
+  });
+  progress.finish();
+  std::signal(SIGINT, previous);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::map<long, std::string> gathered = campaign::gather_rows(mine, world);
+  std::error_code ec;
+  std::filesystem::remove_all(scratch, ec);
+  if (!world.root()) return;
+  for (auto& [k, line] : gathered) done.insert_or_assign(k, std::move(line));
+  appender.reset();
+  campaign::write_sorted(runs_path, header, done);
+
+  campaign::CampaignInfo info;
+  info.scenario = args.scenario.filename().string();
+  info.kind = std::string(c.handler->name);
+  info.seed = args.seed;
+  info.runs = args.runs;
+  info.max_attempts = c.plan.max_attempts;
+  for (const auto& d : c.plan.items) info.dispersed.push_back(d.key);
+  const nlohmann::json summary =
+      campaign::aggregate(info, campaign::csv_split(header), done);
+  {
+    std::ofstream out(args.out_dir / "campaign.json", std::ios::binary | std::ios::trunc);
+    out << summary.dump(2) << '\n';
+  }
+  std::filesystem::remove(args.out_dir / ".scratch", ec);
+
+  if (g_stop.load()) {
+    std::cout << "Interrupted: " << done.size() << " of " << args.runs
+              << " runs kept in " << runs_path.string() << "; continue with --resume\n"
+              << std::flush;
+    std::signal(SIGINT, SIG_DFL);
+    std::raise(SIGINT);
+    return;
+  }
+  std::cout << "Done in " << wall << " s: " << summary["ok"] << " ok, " << summary["rejected"]
+            << " rejected, " << summary["failures"] << " failed, " << summary["violations"]
+            << " with a constraint violation\n";
+  std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
+            << (args.out_dir / "campaign.json").string() << '\n';
+  if (args.plot) {
+    const PlotOutcome p = plot_results("campaign", args.out_dir);
+    for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
+    if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
+  }
+}
+
+}  // namespace attiguard::cli

@@ -1,0 +1,159 @@
+/// @file mission_run.cpp
+/// The `mission` kind: waypoint guidance through the PET-ERG (docs/mission.md).
+
+#include "attiguard/sim/mission_run.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/io/csv_writer.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+
+namespace attiguard::sim {
+
+double MissionResult::delta_v() const noexcept {
+  double dv = 0.0;
+  for (const WaypointResult& w : flight.waypoints) dv += w.delta_v();
+  return dv;
+}
+
+MissionResult simulate_mission(const scenario::MissionScenario& sc, governor::GovernorMode mode,
+                               const MissionObserver& observer) {
+  governor::GovernorParams params = sc.params;
+  params.mode = mode;
+  governor::AttitudeGovernor gov(params, sc.cones);
+  gov.reset(0.0, sc.waypoint.R0_ib);  // R_g(0) = R(0) (PET-ERG paper, Sec. IV-A)
+  const dynamics::SpacecraftPlant plant(sc.waypoint.mission.mass, sc.waypoint.J,
+                                        sc.waypoint.max_wheel_torque);
+
+  MissionResult res;
+  res.min_pointing_margin = std::numeric_limits<double>::infinity();
+  const governor::GovernorOutput* last = nullptr;
+  auto filter = [&](double t, const dynamics::SpacecraftState& y, guidance::MissionCommand& cmd) {
+    const lie::Mat3 R_d = lie::quat_to_rotation(cmd.q_id);
+    const governor::GovernorOutput& out = gov.step(t, y.R[0], dynamics::omega_b_of(y), R_d);
+    last = &out;
+    cmd.inputs.tau_b = out.tau_b;  // PD law (3) towards the governed R_g
+    if (cmd.inputs.thrust > 0.0 && lie::distance(out.R_g, R_d) > sc.align_tolerance) {
+      cmd.inputs.thrust = 0.0;  // fire only when the governed attitude is aligned
+      ++res.thrust_gated;
+    }
+    const double margin = out.min_margin();
+    res.min_pointing_margin = std::min(res.min_pointing_margin, margin);
+    if (margin < 0.0 && res.first_pointing_violation_time < 0.0) {
+      res.first_pointing_violation_time = t;
+    }
+    const double tau = plant.applied_torque(out.tau_b).norm();
+    res.max_torque_norm = std::max(res.max_torque_norm, tau);
+    if (tau > params.tau_max * (1.0 + 1e-9)) ++res.torque_violations;
+  };
+  auto seen = [&](double t, const dynamics::SpacecraftState& y, const guidance::MissionCommand& cmd) {
+    if (observer && last != nullptr) observer(t, y, cmd, *last);
+  };
+  res.flight = simulate_waypoint(sc.waypoint, seen, filter);
+  return res;
+}
+
+namespace {
+
+nlohmann::json flight_json(const scenario::MissionScenario& sc, governor::GovernorMode mode,
+                           const MissionResult& r) {
+  nlohmann::json j;
+  j["governor"] = scenario::governor_mode_name(mode);
+  j["completed"] = r.flight.completed;
+  j["waypoints_reached"] =
+      std::count_if(r.flight.waypoints.begin(), r.flight.waypoints.end(),
+                    [](const WaypointResult& w) { return w.reached; });
+  j["total_time"] = r.flight.total_time;
+  j["total_delta_v"] = r.delta_v();
+  j["min_pointing_margin"] = std::isfinite(r.min_pointing_margin) ? nlohmann::json(r.min_pointing_margin)
+                                                                   : nlohmann::json(nullptr);
+  j["first_pointing_violation_time"] = r.first_pointing_violation_time;
+  j["max_torque_norm"] = r.max_torque_norm;
+  j["torque_violations"] = r.torque_violations;
+  j["thrust_gated_samples"] = r.thrust_gated;
+  j["cone_respected"] = r.first_pointing_violation_time < 0.0;
+  j["torque_respected"] = r.torque_violations == 0;
+  (void)sc;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json run_mission(const scenario::MissionScenario& sc, const std::filesystem::path& out_dir) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  io::ensure_directory(out_dir);
+  io::CsvWriter csv(out_dir / "trajectory.csv",
+                    {"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
+                     "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "tau_norm",
+                     "thrust", "mode", "waypoint", "qg_w", "qg_x", "qg_y", "qg_z", "qd_w", "qd_x",
+                     "qd_y", "qd_z", "trigger", "min_margin"});
+  const auto every = std::max(1L, std::lround(sc.waypoint.output_interval / sc.waypoint.control_period));
+  long k = 0;
+  auto observer = [&](double t, const dynamics::SpacecraftState& y, const guidance::MissionCommand& c,
+                      const governor::GovernorOutput& g) {
+    if (k++ % every != 0 && !c.transition) return;
+    const lie::Vec3 p = dynamics::p_i_of(y), v = dynamics::v_i_of(y), w = dynamics::omega_b_of(y);
+    const lie::Quat& q = c.q_ib;
+    const lie::Quat qg = lie::rotation_to_quat(g.R_g);
+    const lie::Quat& qd = c.q_id;
+    const std::array<double, 31> row{t, p(0), p(1), p(2), v(0), v(1), v(2), q(0), q(1), q(2), q(3),
+                                     w(0), w(1), w(2), g.tau_b(0), g.tau_b(1), g.tau_b(2),
+                                     g.tau_b.norm(), c.inputs.thrust,
+                                     static_cast<double>(static_cast<int>(c.mode)),
+                                     static_cast<double>(c.waypoint), qg(0), qg(1), qg(2), qg(3),
+                                     qd(0), qd(1), qd(2), qd(3), g.trigger ? 1.0 : 0.0,
+                                     g.cone_count > 0 ? g.min_margin() : 0.0};
+    csv.row(row);
+  };
+  const governor::GovernorMode mode = sc.params.mode;
+  const governor::GovernorMode twin_mode =
+      mode == governor::GovernorMode::none ? governor::GovernorMode::pet : governor::GovernorMode::none;
+  const MissionResult own = simulate_mission(sc, mode, observer);
+  csv.close();
+  const MissionResult twin = simulate_mission(sc, twin_mode);
+  if (!own.flight.finite || !twin.flight.finite) {
+    throw NumericalError("mission: non-finite state or command during the run");
+  }
+  const bool own_constrained = mode != governor::GovernorMode::none;
+  const MissionResult& con = own_constrained ? own : twin;
+  const MissionResult& unc = own_constrained ? twin : own;
+
+  nlohmann::json summary = flight_json(sc, mode, own);
+  summary["kind"] = "mission";
+  summary["name"] = sc.waypoint.name;
+  summary["tau_max"] = sc.params.tau_max;
+  nlohmann::json cones = nlohmann::json::array();
+  for (const auto& c : sc.cones) {
+    cones.push_back({{"axis_b", {c.axis_b(0), c.axis_b(1), c.axis_b(2)}},
+                     {"direction_i", {c.direction_i(0), c.direction_i(1), c.direction_i(2)}},
+                     {"theta_c_deg", c.theta_c * 180.0 / 3.14159265358979323846}});
+  }
+  summary["cones"] = cones;
+  nlohmann::json wps = nlohmann::json::array();
+  for (const WaypointResult& w : own.flight.waypoints) {
+    wps.push_back({{"index", w.index},
+                   {"reached", w.reached},
+                   {"arrival_time", w.reached ? nlohmann::json(w.arrival_time) : nlohmann::json(nullptr)},
+                   {"final_position_error", w.final_position_error},
+                   {"final_speed", w.final_speed},
+                   {"delta_v", w.delta_v()}});
+  }
+  summary["waypoints"] = wps;
+  summary["constrained"] = flight_json(sc, own_constrained ? mode : twin_mode, con);
+  summary["unconstrained"] = flight_json(sc, governor::GovernorMode::none, unc);
+  summary["time_cost"] = con.flight.total_time - unc.flight.total_time;
+  summary["delta_v_cost"] = con.delta_v() - unc.delta_v();
+  summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  io::write_json(out_dir / "summary.json", summary);
+  return summary;
+}
+
+}  // namespace attiguard::sim

@@ -1,0 +1,30 @@
+# ctest script: a campaign run serially, with threads and under `mpirun -n 2` must give the same
+# runs.csv and campaign.json byte for byte. Variables: CLI, MPIEXEC, SOURCE_DIR, WORK_DIR.
+set(scenario ${SOURCE_DIR}/examples/pet_erg_campaign.toml)
+set(common --runs 120 --seed 7)
+file(REMOVE_RECURSE ${WORK_DIR})
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
+macro(run_checked)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endmacro()
+run_checked(${CLI} campaign ${scenario} ${common} --out ${WORK_DIR}/serial)
+run_checked(${CLI} campaign ${scenario} ${common} --threads 2 --out ${WORK_DIR}/threads)
+run_checked(${MPIEXEC} -n 2 --oversubscribe --allow-run-as-root
+            ${CLI} campaign ${scenario} ${common} --out ${WORK_DIR}/mpi)
+run_checked(${MPIEXEC} -n 2 --oversubscribe --allow-run-as-root
+            ${CLI} campaign ${scenario} ${common} --threads 2 --out ${WORK_DIR}/mpi_threads)
+foreach(variant threads mpi mpi_threads)
+  foreach(f runs.csv campaign.json)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK_DIR}/serial/${f}
+                            ${WORK_DIR}/${variant}/${f} RESULT_VARIABLE diff)
+    if(NOT diff EQUAL 0)
+      message(FATAL_ERROR "${variant}/${f} differs from serial/${f}")
+    endif()
+  endforeach()
+endforeach()
+message(STATUS "serial, threads, mpi -n 2 and mpi -n 2 x 2 threads: identical")
+file(REMOVE_RECURSE ${WORK_DIR})

@@ -1,0 +1,115 @@
+// End-to-end tests of `attiguard campaign` (serial, threads, replay, resume, failures).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+#ifdef ATTIGUARD_CLI_PATH
+
+namespace attiguard::test {
+namespace {
+
+const std::string kExample = "examples/pet_erg_campaign.toml";
+
+CliResult campaign(const std::string& scenario, const std::filesystem::path& out,
+                   const std::string& extra) {
+  return run_cli("campaign " + scenario + " --out '" + out.string() + "' " + extra);
+}
+
+TEST(CampaignCli, ThreadsGiveTheSerialBytes) {
+  const auto dir = fresh_dir("campaign_threads");
+  const auto r1 = campaign(kExample, dir / "serial", "--runs 60 --seed 11");
+  ASSERT_EQ(r1.exit_code, 0) << r1.err;
+  const auto r2 = campaign(kExample, dir / "threads", "--runs 60 --seed 11 --threads 3");
+  ASSERT_EQ(r2.exit_code, 0) << r2.err;
+  EXPECT_EQ(read_file(dir / "serial/runs.csv"), read_file(dir / "threads/runs.csv"));
+  EXPECT_EQ(read_file(dir / "serial/campaign.json"), read_file(dir / "threads/campaign.json"));
+  EXPECT_EQ(count_lines(read_file(dir / "serial/runs.csv")), 61);
+  const auto j = nlohmann::json::parse(read_file(dir / "serial/campaign.json"));
+  EXPECT_EQ(j["violations"], 0);
+  EXPECT_EQ(j["failures"], 0);
+  EXPECT_EQ(j["ok"], 60);
+  EXPECT_FALSE(std::filesystem::exists(dir / "serial/.scratch"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
+  const auto dir = fresh_dir("campaign_replay");
+  ASSERT_EQ(campaign(kExample, dir, "--runs 8 --seed 5").exit_code, 0);
+  const auto r = campaign(kExample, dir, "--seed 5 --replay 6");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("identical to its row in runs.csv"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "run_6/trajectory.csv"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "run_6/summary.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CampaignCli, ResumeAfterAnInterruptionGivesTheSameResult) {
+  const auto dir = fresh_dir("campaign_resume");
+  ASSERT_EQ(campaign(kExample, dir / "full", "--runs 30 --seed 2").exit_code, 0);
+  // An interrupted campaign: the header, 12 finished rows in completion order, a torn row.
+  const std::string full = read_file(dir / "full/runs.csv");
+  std::filesystem::create_directories(dir / "cut");
+  {
+    std::ofstream out(dir / "cut/runs.csv", std::ios::binary);
+    std::size_t pos = 0;
+    std::vector<std::string> lines;
+    while (pos < full.size()) {
+      const auto nl = full.find('\n', pos);
+      lines.push_back(full.substr(pos, nl - pos));
+      pos = nl + 1;
+    }
+    out << lines[0] << '\n';
+    for (int i : {5, 1, 2, 9, 3, 4, 12, 6, 7, 8, 11, 10}) out << lines[static_cast<std::size_t>(i)] << '\n';
+    out << lines[20].substr(0, 15);
+  }
+  const auto r = campaign(kExample, dir / "cut", "--runs 30 --seed 2 --resume");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("12 already done, 18 to run"), std::string::npos) << r.out;
+  EXPECT_EQ(read_file(dir / "cut/runs.csv"), full);
+  EXPECT_EQ(read_file(dir / "cut/campaign.json"), read_file(dir / "full/campaign.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CampaignCli, FailedRunsAreRecordedAndDoNotStopTheCampaign) {
+  const auto dir = fresh_dir("campaign_failures");
+  const auto r = campaign("tests/data/campaign/rigid_body_failing.toml", dir, "--runs 20 --seed 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_file(dir / "campaign.json"));
+  EXPECT_GT(j["failures"].get<long>(), 0);
+  EXPECT_GT(j["ok"].get<long>(), 0);
+  EXPECT_EQ(j["ok"].get<long>() + j["failures"].get<long>(), 20);
+  EXPECT_NE(j["failed_or_rejected_runs"][0]["reason"].get<std::string>().find("non-finite"),
+            std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CampaignCli, CheckAcceptsACampaignScenario) {
+  const auto r = run_cli("check " + kExample);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("(pet_erg, campaign with 4 dispersion(s))"), std::string::npos) << r.out;
+}
+
+TEST(CampaignCli, InvalidCampaignsExitTwoWithOneLine) {
+  const auto dir = fresh_dir("campaign_invalid");
+  for (const std::string& args :
+       {"campaign examples/pet_erg_paper.toml --runs 3 --out '" + dir.string() + "'",
+        "campaign examples/conreach_paper.toml --runs 3 --out '" + dir.string() + "'",
+        "campaign " + kExample + " --out '" + dir.string() + "'",
+        "campaign " + kExample + " --runs 2 --threads 0 --out '" + dir.string() + "'"}) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace attiguard::test
+
+#endif

@@ -1,0 +1,85 @@
+// Hold-interval certificate (docs/mission.md): ConReach proves that the PD closed loop (3) towards
+// a held R_g keeps the pointing cone (2b) for T_s from a ball around a held state of the PET-ERG
+// paper scenario; a four-times-larger ball cannot be proved (exit 4).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/control/pd_so3.hpp"
+#include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/lie/so3.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
+#include "cli_runner.hpp"
+
+namespace {
+
+const std::filesystem::path kSource{ATTIGUARD_SOURCE_DIR};
+
+}  // namespace
+
+// The centre of the certified ball is the state of examples/pet_erg_paper.toml at t = 5.5 s, the
+// start of a hold interval (trigger false), and the reference is the R_g held there.
+TEST(HoldCertificate, CentreIsAHeldStateOfThePaperScenario) {
+  const auto reach_doc = attiguard::scenario::load_document(kSource / "examples/conreach_hold_certificate.toml");
+  const auto reach_sc = attiguard::scenario::parse_reach(reach_doc);
+  const auto pet_doc = attiguard::scenario::load_document(kSource / "examples/pet_erg_paper.toml");
+  const auto pet_sc = attiguard::scenario::parse_pet_erg(pet_doc);
+
+  bool seen = false;
+  attiguard::lie::Mat3 R_at{}, R_g_at{};
+  attiguard::lie::Vec3 w_at{};
+  bool trigger_at = true;
+  (void)attiguard::sim::simulate_pet_erg(
+      pet_sc, [&](double t, const attiguard::sim::PetErgState& y, const attiguard::lie::Mat3&,
+                  const attiguard::governor::GovernorOutput& out) {
+        if (!seen && std::abs(t - 5.5) < 1e-9) {
+          seen = true;
+          R_at = y.R[0];
+          w_at = y.x;
+          R_g_at = out.R_g;
+          trigger_at = out.trigger;
+        }
+      });
+  ASSERT_TRUE(seen);
+  EXPECT_FALSE(trigger_at);
+  EXPECT_LT(attiguard::lie::distance(R_at, reach_sc.initial.R0), 1e-6);
+  EXPECT_LT((w_at - reach_sc.initial.omega0).norm(), 1e-6);
+  // The reach model's vector field is the paper's PD loop (3) towards the R_g held at t = 5.5 s.
+  const attiguard::dynamics::RigidBody body(pet_sc.params.J);
+  const attiguard::lie::Vec3 expected = body.angular_acceleration(
+      w_at, attiguard::control::pd_torque(R_at, w_at, R_g_at, pet_sc.params.gains));
+  EXPECT_LT((reach_sc.loop->omega_dot(R_at, w_at) - expected).norm(), 1e-6);
+}
+
+#ifdef ATTIGUARD_CLI_PATH
+
+TEST(HoldCertificate, CertificateExampleIsSafe) {
+  const auto out = attiguard::test::fresh_dir("hold_certificate_out");
+  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_certificate.toml --out '" +
+                                          out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
+  EXPECT_EQ(j["verdict"], "safe");
+  EXPECT_DOUBLE_EQ(j["horizon"].get<double>(), 0.5);
+  EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
+  std::filesystem::remove_all(out);
+}
+
+TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4) {
+  const auto out = attiguard::test::fresh_dir("hold_too_large_out");
+  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_too_large.toml --out '" +
+                                          out.string() + "'");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find("cannot be proved"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
+  EXPECT_EQ(j["verdict"], "cannot_prove");
+  std::filesystem::remove_all(out);
+}
+
+#endif

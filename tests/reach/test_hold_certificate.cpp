@@ -1,10 +1,12 @@
 // Hold-interval certificate (docs/mission.md): ConReach proves that the PD closed loop (3) towards
 // a held R_g keeps the pointing cone (2b) for T_s from a ball around a held state of the PET-ERG
-// paper scenario; a four-times-larger ball cannot be proved (exit 4).
+// paper scenario; a four-times-larger ball cannot be proved (exit 4); a partitioned larger set is.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -79,6 +81,31 @@ TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4) {
   EXPECT_NE(r.err.find("cannot be proved"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
   EXPECT_EQ(j["verdict"], "cannot_prove");
+  std::filesystem::remove_all(out);
+}
+
+// Partitioning proves a set that one ball cannot (contraction-reachability paper, Sec. 4.1).
+TEST(HoldCertificate, PartitionedSetIsSafeWhereOneBallCannotBeProved) {
+  const auto doc = attiguard::scenario::load_document(kSource / "examples/conreach_hold_partitioned.toml");
+  const auto sc = attiguard::scenario::parse_reach(doc);
+  ASSERT_EQ(sc.attitude_cells, 3);
+  const auto out = attiguard::test::fresh_dir("hold_partitioned_out");
+  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_partitioned.toml --out '" +
+                                          out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
+  EXPECT_EQ(j["verdict"], "safe");
+  EXPECT_EQ(j["cells"].get<long>(), 27);
+  EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
+
+  // The same set as one cell: the example without its [partition] table (its last table).
+  std::string text = attiguard::test::read_file(kSource / "examples/conreach_hold_partitioned.toml");
+  text = text.substr(0, text.find("[partition]"));
+  const auto one = out / "one_ball.toml";
+  std::ofstream(one) << text;
+  const auto r1 = attiguard::test::run_cli("reach '" + one.string() + "' --out '" +
+                                           (out / "one").string() + "'");
+  EXPECT_EQ(r1.exit_code, 4) << r1.err;
   std::filesystem::remove_all(out);
 }
 

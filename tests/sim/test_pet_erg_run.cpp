@@ -16,6 +16,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
@@ -113,6 +114,24 @@ TEST(PetErgRun, UnconstrainedPdViolatesTheConeAndTheSummarySaysSo) {
   EXPECT_TRUE(s["first_pointing_violation_time"].is_number());
   EXPECT_GT(s["max_torque_norm"].get<double>(), 2.5);
   EXPECT_FALSE(s["torque_limit_satisfied"].get<bool>());
+}
+
+TEST(PetErgRun, ConvergenceTimeIsWhenTheAttitudeErrorEntersTheToleranceForGood) {
+  const scenario::PetErgScenario sc = scenario::parse_pet_erg(paper_doc());
+  double last_outside = -1.0;  // last output row with φ(R_dᵀR) above the tolerance
+  const PetErgResult r = simulate_pet_erg(
+      sc, [&](double t, const PetErgState& y, const Mat3& R_d, const governor::GovernorOutput&) {
+        if (lie::phi(R_d.transpose() * y.R[0]) > sc.convergence_tolerance) last_outside = t;
+      });
+  ASSERT_GT(r.convergence_time, 0.0);
+  EXPECT_GT(r.convergence_time, last_outside);                        // inside after it …
+  EXPECT_LE(r.convergence_time, last_outside + sc.output_interval);  // … and not later
+  // A tolerance the run never reaches gives null in the summary.
+  const scenario::PetErgScenario strict = scenario::parse_pet_erg(
+      paper_doc("step = 0.01", "step = 0.01\nconvergence_tolerance = 1e-30"));
+  const PetErgResult never = simulate_pet_erg(strict);
+  EXPECT_LT(never.convergence_time, 0.0);
+  EXPECT_TRUE(pet_erg_summary(strict, never, 0.0)["convergence_time"].is_null());
 }
 
 TEST(PetErgRun, ContinuousErgAlsoKeepsTheConstraintsOnThePaperScenario) {

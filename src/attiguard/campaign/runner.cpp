@@ -16,7 +16,9 @@ namespace {
 
 bool is_figure(const std::string& key, const nlohmann::json& v) {
   if (key == "wall_time_s" || key == "output_rows") return false;
-  return v.is_number() || v.is_boolean();
+  // null: a figure the nominal run does not have (e.g. no convergence, no violation) that a
+  // dispersed run may have; its column stays empty where it is null.
+  return v.is_number() || v.is_boolean() || v.is_null();
 }
 
 /// "a.b: message" on one line.

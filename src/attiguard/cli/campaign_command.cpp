@@ -17,7 +17,7 @@
 
 #include "attiguard/campaign/aggregation.hpp"
 #include "attiguard/campaign/csv_format.hpp"
-#include "attiguard/campaign/mpi_split.hpp"
+#include "attiguard/campaign/row_gather.hpp"
 #include "attiguard/campaign/progress.hpp"
 #include "attiguard/campaign/runner.hpp"
 #include "attiguard/campaign/runs_file.hpp"
@@ -78,7 +78,7 @@ void replay(const campaign::Campaign& c, const CampaignArguments& args) {
 }  // namespace
 
 void campaign_command(const CampaignArguments& args) {
-  const campaign::World world = campaign::mpi_world();
+  const parallel::World world = parallel::mpi_world();
   if (args.threads < 1) throw InputError("--threads: must be at least 1");
   if (!args.replay && args.runs < 1) throw InputError("--runs: must be at least 1");
   if (args.replay && *args.replay < 0) throw InputError("--replay: must be a run index >= 0");
@@ -99,12 +99,12 @@ void campaign_command(const CampaignArguments& args) {
       if (k < args.runs) done.emplace(k, std::move(line));
     }
   }
-  campaign::barrier(world);
+  parallel::barrier(world);
   std::vector<long> todo;
   for (long k = 0; k < args.runs; ++k) {
     if (!done.contains(k)) todo.push_back(k);
   }
-  const std::vector<long> share = campaign::rank_share(todo, world);
+  const std::vector<long> share = parallel::rank_share(todo, world);
 
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {

@@ -11,6 +11,7 @@
 
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/reach/reach_run.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
@@ -22,19 +23,23 @@ void reach_command(const ReachArguments& args) {
   const scenario::ReachScenario sc = scenario::parse_reach(doc);
   if (args.out_dir.empty()) throw InputError("--out: the output directory must not be empty");
 
-  // Outputs are written even when the verification fails; plots are made before rethrowing.
+  // Under mpirun the partition cells are split over the ranks (docs/scaling.md); rank 0 prints
+  // and writes. Outputs are written even when the verification fails; plots are made before
+  // rethrowing.
+  const parallel::World world = parallel::mpi_world();
   nlohmann::json summary;
   try {
-    summary = reach::run_reach(sc, args.out_dir);
+    summary = reach::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
-    if (args.plot) (void)plot_results("reach", args.out_dir);
+    if (args.plot && world.root()) (void)plot_results("reach", args.out_dir);
     throw;
   }
+  if (!world.root()) return;
   const auto& steps = summary["steps"];
   const auto& last = steps.back();
   char buf[256];
   std::cout << "Reach " << sc.name << " (" << sc.model << ", " << summary["rate_mode"].get<std::string>()
-            << ", " << summary["cells"].get<long>() << " cell(s)) in "
+            << ", " << summary["cells"].get<long>() << " cell(s) on " << world.size << " rank(s)) in "
             << summary["wall_time_s"].get<double>() << " s\n";
   std::snprintf(buf, sizeof buf, "  final ball: r = %.6g, attitude within %.6g rad, c_N = %.4g\n",
                 last["r"].get<double>(), last["attitude_radius"].get<double>(), last["c"].get<double>());

@@ -1,9 +1,12 @@
 #include "attiguard/reach/partition.hpp"
 
 #include <cmath>
+#include <numeric>
+#include <string>
 
 #include "attiguard/core/errors.hpp"
-#include "attiguard/reach/parallel.hpp"
+#include "attiguard/parallel/parallel_for.hpp"
+#include "attiguard/reach/result_codec.hpp"
 
 namespace attiguard::reach {
 
@@ -53,11 +56,74 @@ std::vector<InitialSet> partition_initial_set(const InitialSet& whole, int n_att
 }
 
 std::vector<ReachResult> run_partitioned(const ClosedLoop& loop, const std::vector<InitialSet>& cells,
-                                         const ConReachSettings& settings, int threads) {
-  std::vector<ReachResult> out(cells.size());
-  parallel_for(static_cast<long>(cells.size()), threads, [&](long i) {
-    out[static_cast<std::size_t>(i)] = run_conreach(loop, cells[static_cast<std::size_t>(i)], settings);
+                                         const ConReachSettings& settings, int threads,
+                                         const parallel::World& world) {
+  std::vector<long> indices(cells.size());
+  std::iota(indices.begin(), indices.end(), 0L);
+  const std::vector<long> share = parallel::rank_share(indices, world);
+
+  // This rank's cells. A failing cell must not skip the collective below (the other ranks
+  // would wait for ever), so failures are recorded per cell and raised after the exchange.
+  std::vector<ReachResult> mine(share.size());
+  std::vector<std::string> failure(share.size());  // "" or "<exit code> <message>"
+  parallel::parallel_for(static_cast<long>(share.size()), threads, [&](long p) {
+    const auto q = static_cast<std::size_t>(p);
+    try {
+      mine[q] = run_conreach(loop, cells[static_cast<std::size_t>(share[q])], settings);
+    } catch (const Error& e) {
+      failure[q] = std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
+    } catch (const std::exception& e) {
+      failure[q] = std::to_string(static_cast<int>(ExitCode::numerical_failure)) + ' ' + e.what();
+    }
   });
+
+  std::vector<ReachResult> out(cells.size());
+  std::vector<std::string> failures(cells.size());
+  if (world.size == 1) {
+    for (std::size_t q = 0; q < share.size(); ++q) {
+      out[static_cast<std::size_t>(share[q])] = std::move(mine[q]);
+      failures[static_cast<std::size_t>(share[q])] = std::move(failure[q]);
+    }
+  } else {
+    // Every rank receives every cell (so all ranks reach the same verdict and exit code):
+    // per cell, its index, its failure and its CBOR-encoded result, length-prefixed.
+    std::string packed;
+    auto put = [&packed](const std::string& field) {
+      packed += std::to_string(field.size()) + ':' + field;
+    };
+    for (std::size_t q = 0; q < share.size(); ++q) {
+      put(std::to_string(share[q]));
+      put(failure[q]);
+      put(failure[q].empty() ? encode_result(mine[q]) : std::string());
+    }
+    for (const std::string& part : parallel::allgather_bytes(packed, world)) {
+      std::size_t pos = 0;
+      auto take = [&part, &pos]() {
+        const std::size_t colon = part.find(':', pos);
+        if (colon == std::string::npos) throw NumericalError("reach: malformed cell exchange between ranks");
+        const std::size_t n = std::stoul(part.substr(pos, colon - pos));
+        std::string field = part.substr(colon + 1, n);
+        pos = colon + 1 + n;
+        return field;
+      };
+      while (pos < part.size()) {
+        const auto cell = static_cast<std::size_t>(std::stol(take()));
+        failures.at(cell) = take();
+        const std::string bytes = take();
+        if (failures[cell].empty()) out[cell] = decode_result(bytes);
+      }
+    }
+  }
+  // The failure of the lowest cell index, whatever the split (same message serial and MPI).
+  for (const std::string& f : failures) {
+    if (f.empty()) continue;
+    const std::size_t space = f.find(' ');
+    const int code = std::stoi(f.substr(0, space));
+    const std::string message = f.substr(space + 1);
+    if (code == static_cast<int>(ExitCode::invalid_input)) throw InputError(message);
+    if (code == static_cast<int>(ExitCode::verification_failed)) throw VerificationFailure(message);
+    throw NumericalError(message);
+  }
   return out;
 }
 

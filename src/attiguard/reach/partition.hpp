@@ -12,6 +12,7 @@
 
 #include <vector>
 
+#include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/reach/conreach.hpp"
 
 namespace attiguard::reach {
@@ -20,10 +21,15 @@ namespace attiguard::reach {
 [[nodiscard]] std::vector<InitialSet> partition_initial_set(const InitialSet& whole, int n_att,
                                                             int n_omega);
 
-/// ConReach on every cell, `threads` at a time (0: hardware concurrency). SDP calls are
-/// serialised inside the solver wrapper.
+/// ConReach on every cell (contraction-reachability paper, Sec. 4.1: cells are independent).
+/// The cells are dealt round robin over the MPI ranks of `world` (parallel/mpi_world.hpp) and,
+/// inside a rank, run `threads` at a time (0: hardware concurrency; SDP calls are serialised in
+/// the solver wrapper); every rank returns all cells, bit for bit what one process computes.
+/// Every cell runs even when one fails; then the error of the lowest failing cell is thrown
+/// (same type and message on every rank and for every split).
 [[nodiscard]] std::vector<ReachResult> run_partitioned(const ClosedLoop& loop,
                                                        const std::vector<InitialSet>& cells,
-                                                       const ConReachSettings& settings, int threads);
+                                                       const ConReachSettings& settings, int threads,
+                                                       const parallel::World& world = {});
 
 }  // namespace attiguard::reach

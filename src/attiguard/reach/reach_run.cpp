@@ -1,5 +1,6 @@
 #include "attiguard/reach/reach_run.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -10,11 +11,11 @@
 #include "attiguard/io/csv_writer.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
+#include "attiguard/parallel/parallel_for.hpp"
 #include "attiguard/reach/boundary.hpp"
 #include "attiguard/reach/geodesic.hpp"
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/partition.hpp"
-#include "attiguard/reach/sdp_solver.hpp"
 
 namespace attiguard::reach {
 
@@ -57,14 +58,14 @@ int choose_chart(const std::vector<ReachResult>& results) {
 
 }  // namespace
 
-nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir) {
+nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir,
+                         const parallel::World& world) {
   const auto wall0 = std::chrono::steady_clock::now();
-  io::ensure_directory(out_dir);
-  const long solves0 = sdp_solve_count();
+  if (world.root()) io::ensure_directory(out_dir);
   const ClosedLoop& loop = *sc.loop;
   const std::vector<InitialSet> cells =
       partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);
-  const std::vector<ReachResult> results = run_partitioned(loop, cells, sc.settings, sc.threads);
+  const std::vector<ReachResult> results = run_partitioned(loop, cells, sc.settings, sc.threads, world);
   const double analysis_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const SafetyVerdict verdict = verify_safety(sc.safety, results);
@@ -113,8 +114,18 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
   j["first_failure_time"] = verdict.first_failure_time >= 0.0 ? nlohmann::json(verdict.first_failure_time)
                                                               : nlohmann::json(nullptr);
   if (!verdict.reason.empty()) j["safety_reason"] = verdict.reason;
-  j["sdp_solves"] = sdp_solve_count() - solves0;
+  long solves = 0;  // summed over cells, so the same whichever rank solved them
+  for (const ReachResult& res : results) solves += res.sdp_solves;
+  j["sdp_solves"] = solves;
   j["wall_time_s"] = analysis_time;
+
+  if (!world.root()) {  // the other ranks reach the same verdict and exit code but write nothing
+    j["chart"] = choose_chart(results);
+    if (verdict.requested && !verdict.proved) {
+      throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);
+    }
+    return j;
+  }
 
   // CSV outputs.
   {
@@ -169,18 +180,23 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
   const int chart = choose_chart(results);
   j["chart"] = chart;
   if (sc.boundary_points > 0) {
-    io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
-    for (std::size_t c = 0; c < results.size(); ++c) {
+    // Cells' boundaries computed on the scenario's threads, written in cell order.
+    std::vector<std::vector<std::array<double, 7>>> rows(results.size());
+    parallel::parallel_for(static_cast<long>(results.size()), sc.threads, [&](long ci) {
+      const auto c = static_cast<std::size_t>(ci);
       const ReachResult& res = results[c];
       auto emit = [&](int step, double t, const Mat3& Q, double r, const Mat3& Rc) {
         for (const Vec3& p : ball_boundary(Q, r, Rc, chart, sc.boundary_points)) {
-          const std::array<double, 7> row{static_cast<double>(c), static_cast<double>(step), t,
-                                          static_cast<double>(chart), p(0), p(1), p(2)};
-          csv.row(row);
+          rows[c].push_back({static_cast<double>(c), static_cast<double>(step), t,
+                             static_cast<double>(chart), p(0), p(1), p(2)});
         }
       };
       emit(0, 0.0, res.Q0, res.r0, res.nominal.front().R);
       for (const ReachStep& st : res.steps) emit(st.index + 1, st.t1, st.Q, st.r, st.R);
+    });
+    io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
+    for (const auto& cell_rows : rows) {
+      for (const auto& row : cell_rows) csv.row(row);
     }
     csv.close();
   }

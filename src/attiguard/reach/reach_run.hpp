@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 
 namespace attiguard::reach {
@@ -19,6 +20,10 @@ namespace attiguard::reach {
 /// Runs the scenario and writes the outputs. Returns the summary (also in reach.json).
 /// Throws NumericalError (solver/NaN/chart/soundness failure) or VerificationFailure (safety
 /// requested and not proved) — in both cases after writing whatever was computed.
-nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir);
+/// Under MPI the partition cells are split over the ranks of `world`; every rank gets the
+/// verdict (and throws the same VerificationFailure), only rank 0 runs the soundness sampling
+/// and writes files.
+nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir,
+                         const parallel::World& world = {});
 
 }  // namespace attiguard::reach

@@ -7,7 +7,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/reach/metrics.hpp"
-#include "attiguard/reach/parallel.hpp"
+#include "attiguard/parallel/parallel_for.hpp"
 
 namespace attiguard::reach {
 
@@ -46,7 +46,7 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   double first_violation = -1.0;
   rep.kept.resize(static_cast<std::size_t>(std::min<long>(settings.keep, settings.samples)));
 
-  parallel_for(settings.samples, settings.threads, [&](long s) {
+  parallel::parallel_for(settings.samples, settings.threads, [&](long s) {
     std::mt19937_64 g(settings.seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(s));
     const bool boundary = (s % 2) == 0;
     const Mat3 R = whole.R0 * lie::exp(sample_ball(g, whole.attitude_radius, boundary));

@@ -227,10 +227,12 @@ PetErgScenario parse_pet_erg(const Document& doc) {
 
   const TableReader simulation = root.table("simulation");
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
-                       "max_step"});
+                       "max_step", "convergence_tolerance"});
   sc.duration = simulation.number("duration", NumberRule::positive());
   sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
   sc.integrator = parse_integrator_settings(simulation);
+  sc.convergence_tolerance =
+      simulation.number_or("convergence_tolerance", 1e-4, NumberRule::positive());
   for (const auto& [key, value] : {std::pair<std::string_view, double>{"output_interval",
                                                                          sc.output_interval},
                                     {"step", sc.integrator.step}}) {

@@ -27,6 +27,7 @@ struct PetErgScenario {
   governor::ReferenceSchedule desired;        ///< [desired] attitude or schedule
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
+  double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
 };
 

@@ -105,7 +105,13 @@ PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
     return d;
   };
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
-    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag);
+    const Mat3 R_d = sc.desired.at(t);
+    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag);
+    if (lie::phi(R_d.transpose() * s.R[0]) > sc.convergence_tolerance) {
+      r.convergence_time = -1.0;
+    } else if (r.convergence_time < 0.0) {
+      r.convergence_time = t;
+    }
     r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
     r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
     for (int i = 0; i < n_cones; ++i) {
@@ -222,6 +228,9 @@ nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc, const PetErgR
   j["final_attitude_error"] = r.final_attitude_error;
   j["final_reference_error"] = r.final_reference_error;
   j["final_omega_norm"] = r.final_omega_norm;
+  j["convergence_tolerance"] = sc.convergence_tolerance;
+  j["convergence_time"] =
+      r.convergence_time >= 0.0 ? nlohmann::json(r.convergence_time) : nlohmann::json(nullptr);
   j["samples"] = r.samples;
   j["samples_updating"] = r.samples_updating;
   j["steps"] = r.steps;

@@ -41,6 +41,9 @@ struct PetErgResult {
   double final_attitude_error{0.0};   ///< φ(R_dᵀR) at the end
   double final_reference_error{0.0};  ///< φ(R_dᵀR_g) at the end
   double final_omega_norm{0.0};
+  /// Earliest time from which φ(R_d(t)ᵀR(t)) ≤ the scenario's convergence_tolerance at every
+  /// later step up to the end; −1 when the end is not within the tolerance.
+  double convergence_time{-1.0};
   long samples{0};           ///< sampling instants at which (5) was evaluated (mode pet)
   long samples_updating{0};  ///< of which the condition held
   long steps{0};

@@ -1,5 +1,5 @@
 #pragma once
-/// @file parallel.hpp
+/// @file parallel_for.hpp
 /// parallel_for over [0, n) with std::thread workers; the first exception is rethrown.
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-namespace attiguard::reach {
+namespace attiguard::parallel {
 
 /// Runs fn(i) for i in [0, n) on `threads` workers (0: hardware concurrency, at most n).
 template <class Fn>
@@ -41,4 +41,4 @@ void parallel_for(long n, int threads, Fn&& fn) {
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace attiguard::reach
+}  // namespace attiguard::parallel

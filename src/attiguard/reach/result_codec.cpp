@@ -1,0 +1,134 @@
+#include "attiguard/reach/result_codec.hpp"
+
+#include <cstdint>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/core/errors.hpp"
+
+namespace attiguard::reach {
+
+namespace {
+
+using nlohmann::json;
+
+template <class M>
+json dense(const M& m) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < m.size(); ++i) a.push_back(m.data()[i]);
+  return a;
+}
+
+template <class M>
+void dense(const json& a, M& m) {
+  if (!a.is_array() || static_cast<Eigen::Index>(a.size()) != m.size()) {
+    throw NumericalError("reach result: array of the wrong size in a gathered cell");
+  }
+  for (Eigen::Index i = 0; i < m.size(); ++i) m.data()[i] = a[static_cast<std::size_t>(i)].get<double>();
+}
+
+json box(const Box3& b) { return {dense(b.lo), dense(b.hi)}; }
+void box(const json& j, Box3& b) {
+  dense(j.at(0), b.lo);
+  dense(j.at(1), b.hi);
+}
+json ball(const AttitudeBall& b) { return {dense(b.center), b.radius}; }
+void ball(const json& j, AttitudeBall& b) {
+  dense(j.at(0), b.center);
+  b.radius = j.at(1).get<double>();
+}
+
+json step_json(const ReachStep& s) {
+  json tube = json::array();
+  for (const TubeSegment& g : s.state_tube) tube.push_back({g.t0, g.t1, ball(g.attitude), box(g.omega)});
+  json trials = json::array();
+  for (const RateTrial& t : s.trials) trials.push_back({t.c, t.feasible, t.enclosure_radius});
+  return {{"i", s.index}, {"t0", s.t0}, {"t1", s.t1}, {"wbox", box(s.omega_box)},
+          {"abox", ball(s.attitude_box)}, {"tube", tube}, {"c_id", s.c_identity}, {"c", s.c},
+          {"Q", dense(s.Q)}, {"P", dense(s.P)}, {"r", s.r}, {"R", dense(s.R)}, {"w", dense(s.omega)},
+          {"ar", s.attitude_radius}, {"whw", dense(s.omega_half_widths)},
+          {"na", s.numerical_allowance}, {"exact", s.lmi_exact}, {"rho", s.lmi_rho},
+          {"fb", s.fallback}, {"solves", s.sdp_solves}, {"trials", trials}};
+}
+
+ReachStep step_from(const json& j) {
+  ReachStep s;
+  s.index = j.at("i").get<int>();
+  s.t0 = j.at("t0").get<double>();
+  s.t1 = j.at("t1").get<double>();
+  box(j.at("wbox"), s.omega_box);
+  ball(j.at("abox"), s.attitude_box);
+  for (const json& g : j.at("tube")) {
+    TubeSegment seg;
+    seg.t0 = g.at(0).get<double>();
+    seg.t1 = g.at(1).get<double>();
+    ball(g.at(2), seg.attitude);
+    box(g.at(3), seg.omega);
+    s.state_tube.push_back(seg);
+  }
+  s.c_identity = j.at("c_id").get<double>();
+  s.c = j.at("c").get<double>();
+  dense(j.at("Q"), s.Q);
+  dense(j.at("P"), s.P);
+  s.r = j.at("r").get<double>();
+  dense(j.at("R"), s.R);
+  dense(j.at("w"), s.omega);
+  s.attitude_radius = j.at("ar").get<double>();
+  dense(j.at("whw"), s.omega_half_widths);
+  s.numerical_allowance = j.at("na").get<double>();
+  s.lmi_exact = j.at("exact").get<bool>();
+  s.lmi_rho = j.at("rho").get<double>();
+  s.fallback = j.at("fb").get<bool>();
+  s.sdp_solves = j.at("solves").get<int>();
+  for (const json& t : j.at("trials")) {
+    s.trials.push_back({t.at(0).get<double>(), t.at(1).get<bool>(), t.at(2).get<double>()});
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string encode_result(const ReachResult& r) {
+  json steps = json::array();
+  for (const ReachStep& s : r.steps) steps.push_back(step_json(s));
+  json nominal = json::array();
+  for (const NominalPoint& p : r.nominal) nominal.push_back({p.t, dense(p.R), dense(p.omega)});
+  const InitialSet& in = r.initial;
+  const json j = {{"init", {dense(in.R0), in.attitude_radius, dense(in.omega0), in.omega_radius, dense(in.P0)}},
+                  {"Q0", dense(r.Q0)}, {"P0", dense(r.P0)}, {"r0", r.r0}, {"steps", steps},
+                  {"nominal", nominal}, {"solves", r.sdp_solves}, {"wall", r.wall_time_s}};
+  const std::vector<std::uint8_t> bytes = json::to_cbor(j);
+  return {bytes.begin(), bytes.end()};
+}
+
+ReachResult decode_result(const std::string& bytes) {
+  try {
+    const json j = json::from_cbor(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+    ReachResult r;
+    const json& in = j.at("init");
+    dense(in.at(0), r.initial.R0);
+    r.initial.attitude_radius = in.at(1).get<double>();
+    dense(in.at(2), r.initial.omega0);
+    r.initial.omega_radius = in.at(3).get<double>();
+    dense(in.at(4), r.initial.P0);
+    dense(j.at("Q0"), r.Q0);
+    dense(j.at("P0"), r.P0);
+    r.r0 = j.at("r0").get<double>();
+    for (const json& s : j.at("steps")) r.steps.push_back(step_from(s));
+    for (const json& p : j.at("nominal")) {
+      NominalPoint n;
+      n.t = p.at(0).get<double>();
+      dense(p.at(1), n.R);
+      dense(p.at(2), n.omega);
+      r.nominal.push_back(n);
+    }
+    r.sdp_solves = j.at("solves").get<int>();
+    r.wall_time_s = j.at("wall").get<double>();
+    return r;
+  } catch (const json::exception& e) {
+    throw NumericalError(std::string("reach result: malformed gathered cell: ") + e.what());
+  }
+}
+
+}  // namespace attiguard::reach

@@ -96,6 +96,20 @@ TEST(WaypointScenario, RejectsUnreachableWaypointsAndBadParameters) {
   expect_input_error(doc_with("kappa_d = 5.0", "kappa_d = 0.0"), "kappa_d");
   expect_input_error(doc_with("output_interval = 1.0", "output_interval = 0.01"), "output_interval");
   expect_input_error(doc_with("cruise_speed = 100.0", "cruise_sped = 100.0"), "cruise_sped");
+  // A main engine more than 10 deg from body x (here 26 deg).
+  expect_input_error(doc_with("main_thrust = 20.0", "main_thrust = 20.0\nmain_thrust_axis_b = [0.9, 0.44, 0.0]"),
+                     "main_thrust_axis_b");
+}
+
+TEST(WaypointScenario, AnExplicitBodyXEngineAxisIsThePaperPlant) {
+  const scenario::WaypointScenario sc = scenario::parse_waypoint(scenario::parse_document(
+      doc_with("main_thrust = 20.0", "main_thrust = 20.0\nmain_thrust_axis_b = [2.0, 0.0, 0.0]"),
+      "axis.toml"));
+  EXPECT_EQ(sc.main_thrust_axis_b, lie::Vec3::UnitX());  // normalised
+  const WaypointSimResult explicit_axis = simulate_waypoint(sc);
+  const WaypointSimResult paper = simulate_waypoint(load("examples/waypoint_paper.toml"));
+  ASSERT_EQ(explicit_axis.waypoints.size(), paper.waypoints.size());
+  EXPECT_EQ(explicit_axis.waypoints[2].final_position_error, paper.waypoints[2].final_position_error);
 }
 
 #ifdef ATTIGUARD_CLI_PATH

@@ -1,6 +1,7 @@
 #pragma once
 /// @file spacecraft_plant.hpp
-/// Spacecraft with one main thruster along body x, six on/off reaction-control thrusters and
+/// Spacecraft with one main thruster along body x (or a misaligned axis near it), six on/off
+/// reaction-control thrusters and
 /// reaction wheels: translational dynamics (2)-(3) and attitude dynamics (4)-(5) of the waypoint
 /// paper, simulated on SO(3) × R⁹ (attitude as R_ib; quaternions are outputs).
 
@@ -20,17 +21,22 @@ using SpacecraftState = integrate::ProductState<1, 9>;
 /// Actuator commands held over one control period.
 struct SpacecraftInputs {
   Vec3 tau_b{Vec3::Zero()};    ///< wheel torque command [N·m]
-  double thrust{0.0};          ///< main thrust T along x_b, 0 or T_max [N]
+  double thrust{0.0};          ///< main thrust T along the engine axis (x_b nominally), 0 or T_max [N]
   Vec3 f_rct_b{Vec3::Zero()};  ///< net RCT body force B T_RCT [N]
 };
 
-/// Mass, inertia and the optional per-axis wheel torque limit.
+/// Mass, inertia, the optional per-axis wheel torque limit and the main engine's actual axis.
 class SpacecraftPlant {
  public:
-  /// m and J of (3), (5) of the waypoint paper. Throws InputError for an invalid inertia
-  /// (RigidBody); mass > 0 is the caller's check.
-  SpacecraftPlant(double mass, const Mat3& J, double max_wheel_torque = 0.0)
-      : body_(J), mass_(mass), max_wheel_torque_(max_wheel_torque) {}
+  /// m and J of (3), (5) of the waypoint paper. `main_thrust_axis_b` is the unit direction the
+  /// main engine really pushes along in the body frame: x_b in the paper; a mounting
+  /// misalignment tilts it, which the guidance does not know (it points x_b) and must absorb.
+  /// Throws InputError for an invalid inertia (RigidBody); mass > 0 and a unit axis are the
+  /// caller's checks.
+  SpacecraftPlant(double mass, const Mat3& J, double max_wheel_torque = 0.0,
+                  const Vec3& main_thrust_axis_b = Vec3::UnitX())
+      : body_(J), mass_(mass), max_wheel_torque_(max_wheel_torque),
+        main_thrust_axis_b_(main_thrust_axis_b) {}
 
   [[nodiscard]] double mass() const noexcept { return mass_; }
   [[nodiscard]] const RigidBody& body() const noexcept { return body_; }
@@ -44,9 +50,10 @@ class SpacecraftPlant {
     return tau_cmd_b;
   }
 
-  /// v̇^i = (1/m) R_b^i (f^b_Thruster + f^b_RCT), f^b_Thruster = [T, 0, 0] (waypoint paper, (3)).
+  /// v̇^i = (1/m) R_b^i (f^b_Thruster + f^b_RCT), f^b_Thruster = T a_b (waypoint paper, (3),
+  /// where a_b = [1, 0, 0]; a_b = main_thrust_axis_b here).
   [[nodiscard]] Vec3 acceleration_i(const Mat3& R_ib, const SpacecraftInputs& u) const noexcept {
-    return R_ib * (Vec3(u.thrust, 0.0, 0.0) + u.f_rct_b) / mass_;
+    return R_ib * (u.thrust * main_thrust_axis_b_ + u.f_rct_b) / mass_;
   }
 
   /// Body-velocity tangent [ω_b; ω̇_b; ṗ_i; v̇_i] of (2)-(5) of the waypoint paper:
@@ -66,6 +73,7 @@ class SpacecraftPlant {
   RigidBody body_;
   double mass_;
   double max_wheel_torque_;
+  Vec3 main_thrust_axis_b_;
 };
 
 }  // namespace attiguard::dynamics

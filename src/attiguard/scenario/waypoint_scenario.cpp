@@ -2,6 +2,7 @@
 
 #include "attiguard/scenario/waypoint_scenario.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -23,6 +24,8 @@ void declare(const TableReader& table, std::initializer_list<std::string_view> k
 std::string num(double x) { return detail::format_number(x); }
 
 constexpr double kPi = 3.14159265358979323846;
+/// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
+constexpr double kMaxThrustTiltDeg = 10.0;
 
 }  // namespace
 
@@ -55,12 +58,25 @@ WaypointScenario parse_waypoint(const Document& doc) {
   (void)root.string_or("description", "");
 
   const TableReader craft = root.table("spacecraft");
-  declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque"});
+  declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque",
+                  "main_thrust_axis_b"});
   mp.mass = craft.number("mass", NumberRule::positive());
   sc.J = craft.inertia("inertia");
   mp.T_max = craft.number("main_thrust", NumberRule::positive());
   mp.f_max = craft.number("rct_thrust", NumberRule::positive());
   sc.max_wheel_torque = craft.number_or("max_wheel_torque", 0.0, NumberRule::non_negative());
+  if (craft.has("main_thrust_axis_b")) {
+    // A mounting misalignment the guidance does not know about (it points x_b): only a tilt
+    // the thrust logic can live with is accepted.
+    sc.main_thrust_axis_b = craft.direction("main_thrust_axis_b");
+    const double tilt_deg =
+        std::acos(std::clamp(sc.main_thrust_axis_b.x(), -1.0, 1.0)) * 180.0 / kPi;
+    if (tilt_deg > kMaxThrustTiltDeg) {
+      craft.fail("main_thrust_axis_b", "the main engine axis is " + num(tilt_deg) +
+                                           " deg from body x; at most " + num(kMaxThrustTiltDeg) +
+                                           " deg of misalignment is supported");
+    }
+  }
 
   if (const auto initial = root.optional_table("initial")) {
     declare(*initial, {"position", "velocity", "attitude", "omega_b"});

@@ -19,6 +19,7 @@ struct WaypointScenario {
   std::string name;
   lie::Mat3 J{lie::Mat3::Identity() * 20.0};  ///< [spacecraft] inertia [kg·m²]
   double max_wheel_torque{0.0};               ///< [spacecraft] per-axis limit; 0 = none [N·m]
+  lie::Vec3 main_thrust_axis_b{lie::Vec3::UnitX()};  ///< [spacecraft] actual engine axis (unit)
   guidance::MissionParams mission;            ///< mass, thrusts, [guidance], [fine_position]
   control::QuaternionPidGains gains;          ///< [attitude_control]
   std::vector<lie::Vec3> waypoints_i;         ///< [[waypoints]] position [m]

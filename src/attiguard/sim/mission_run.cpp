@@ -30,7 +30,7 @@ MissionResult simulate_mission(const scenario::MissionScenario& sc, governor::Go
   governor::AttitudeGovernor gov(params, sc.cones);
   gov.reset(0.0, sc.waypoint.R0_ib);  // R_g(0) = R(0) (PET-ERG paper, Sec. IV-A)
   const dynamics::SpacecraftPlant plant(sc.waypoint.mission.mass, sc.waypoint.J,
-                                        sc.waypoint.max_wheel_torque);
+                                        sc.waypoint.max_wheel_torque, sc.waypoint.main_thrust_axis_b);
 
   MissionResult res;
   res.min_pointing_margin = std::numeric_limits<double>::infinity();

@@ -27,7 +27,8 @@ bool command_finite(const guidance::MissionCommand& c) noexcept {
 WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
                                     const SampleObserver& observer,
                                     const CommandFilter& filter) {
-  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque);
+  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque,
+                                        sc.main_thrust_axis_b);
   guidance::Mission mission(sc.mission, sc.gains, sc.waypoints_i);
   WaypointSimResult res;
   const int n_wp = static_cast<int>(sc.waypoints_i.size());
@@ -124,7 +125,8 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
                     {"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
                      "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "thrust", "rct_1",
                      "rct_2", "rct_3", "rct_4", "rct_5", "rct_6", "mode", "waypoint"});
-  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque);
+  const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque,
+                                        sc.main_thrust_axis_b);
   const auto every = std::max(1L, std::lround(sc.output_interval / sc.control_period));
   long k = 0;
   std::array<double, 26> last_row{};

@@ -37,19 +37,7 @@ MissionScenario parse_mission(const Document& doc) {
   sc.align_tolerance = control.number_or("align_tolerance", sc.align_tolerance, NumberRule::positive());
   control.finish();
 
-  if (const auto erg = root.optional_table("erg")) {
-    for (const char* key : {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"}) {
-      (void)erg->has(key);
-    }
-    sc.params.kappa = erg->number_or("kappa", sc.params.kappa, NumberRule::positive());
-    sc.params.c_gamma =
-        erg->number_or("c_gamma", sc.params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
-    sc.params.Ts = erg->number_or("sampling_period", sc.params.Ts, NumberRule::positive());
-    sc.params.epsilon = erg->number_or("epsilon", sc.params.epsilon, NumberRule::positive());
-    sc.params.epsilon_gamma =
-        erg->number_or("epsilon_gamma", sc.params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
-    erg->finish();
-  }
+  parse_erg_table(root, sc.params);
 
   if (root.has("cones")) {
     const std::vector<TableReader> cones = root.array_of_tables("cones");

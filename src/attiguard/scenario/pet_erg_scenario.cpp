@@ -117,6 +117,19 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
 
 }  // namespace
 
+void parse_erg_table(const TableReader& root, governor::GovernorParams& params) {
+  const auto erg = root.optional_table("erg");
+  if (!erg) return;
+  declare(*erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"});
+  params.kappa = erg->number_or("kappa", params.kappa, NumberRule::positive());
+  params.c_gamma = erg->number_or("c_gamma", params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
+  params.Ts = erg->number_or("sampling_period", params.Ts, NumberRule::positive());
+  params.epsilon = erg->number_or("epsilon", params.epsilon, NumberRule::positive());
+  params.epsilon_gamma =
+      erg->number_or("epsilon_gamma", params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
+  erg->finish();
+}
+
 ConeConstraint parse_cone(const TableReader& t) {
   declare(t, {"type", "axis_b", "direction_i", "half_angle", "half_angle_deg", "delta_offset",
               "zeta_offset", "repulsive_gain"});
@@ -186,16 +199,7 @@ PetErgScenario parse_pet_erg(const Document& doc) {
   sc.params.gains.kd = control.number("kd", NumberRule::positive());
   sc.params.tau_max = control.number("tau_max", NumberRule::positive());
 
-  if (const auto erg = root.optional_table("erg")) {
-    declare(*erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"});
-    sc.params.kappa = erg->number_or("kappa", sc.params.kappa, NumberRule::positive());
-    sc.params.c_gamma =
-        erg->number_or("c_gamma", sc.params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
-    sc.params.Ts = erg->number_or("sampling_period", sc.params.Ts, NumberRule::positive());
-    sc.params.epsilon = erg->number_or("epsilon", sc.params.epsilon, NumberRule::positive());
-    sc.params.epsilon_gamma =
-        erg->number_or("epsilon_gamma", sc.params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
-  }
+  parse_erg_table(root, sc.params);
 
   if (root.has("cones")) {
     const std::vector<TableReader> cones = root.array_of_tables("cones");

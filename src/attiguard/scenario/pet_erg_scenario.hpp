@@ -48,4 +48,9 @@ struct PetErgScenario {
 /// stored as the keep-in cone of π − α). Throws InputError. Shared with the `mission` kind.
 [[nodiscard]] governor::ConeConstraint parse_cone(const TableReader& t);
 
+/// Reads the optional `[erg]` table of `root` into `params` (PET-ERG paper: κ of (4)/(6), c_Γ and
+/// T_s of (5)-(6), ε of the navigation field, ε_Γ of the cap k_p(2 − ε_Γ)); keys left out keep
+/// the values in `params`; unknown keys are errors. Shared by kinds `pet_erg` and `mission`.
+void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
+
 }  // namespace attiguard::scenario

@@ -78,8 +78,9 @@ nlohmann::json flight_json(const scenario::MissionScenario& sc, governor::Govern
   j["max_torque_norm"] = r.max_torque_norm;
   j["torque_violations"] = r.torque_violations;
   j["thrust_gated_samples"] = r.thrust_gated;
-  j["cone_respected"] = r.first_pointing_violation_time < 0.0;
-  j["torque_respected"] = r.torque_violations == 0;
+  j["pointing_constraints_satisfied"] = r.first_pointing_violation_time < 0.0;
+  j["torque_limit_satisfied"] = r.torque_violations == 0;
+  j["constraints_satisfied"] = r.first_pointing_violation_time < 0.0 && r.torque_violations == 0;
   (void)sc;
   return j;
 }

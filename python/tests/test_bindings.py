@@ -166,3 +166,20 @@ def test_reach_returns_the_balls():
     assert res.verdict == "safe"
     assert len(res.balls["r"]) == 5
     assert np.all(res.balls["r"] > 0.0)
+
+
+def test_missing_extension_module_gives_a_clear_import_error(tmp_path):
+    # The pure-Python files without the compiled _core (an unfinished build): a message that
+    # says what is missing and how to build it, not a bare "circular import".
+    import shutil
+    package = Path(ag.__file__).parent
+    copy = tmp_path / "attiguard"
+    copy.mkdir()
+    for f in package.glob("*.py"):
+        shutil.copy(f, copy / f.name)
+    env = dict(os.environ, PYTHONPATH=str(tmp_path), PYTHONNOUSERSITE="1")
+    r = subprocess.run(["/usr/bin/python3", "-c", "import attiguard"], env=env, cwd=tmp_path,
+                       capture_output=True, text=True)
+    assert r.returncode != 0
+    assert "attiguard._core is missing" in r.stderr
+    assert "scripts/build.sh" in r.stderr

@@ -11,7 +11,13 @@ find it).
 
 from __future__ import annotations
 
-from . import _core
+try:
+    from . import _core
+except ImportError as _e:  # the Python files are copied at configure time, _core at build time
+    raise ImportError(
+        f"attiguard: the compiled extension attiguard._core is missing or unloadable next to "
+        f"{__file__} (the build of this checkout is unfinished or failed): run "
+        f"`bash scripts/build.sh` in that checkout. Cause: {_e}") from _e
 from ._api import check, reach, run
 from ._core import (Cone, Error, Governor, GovernorOutput, InputError, Mission, NumericalError,
                     QuaternionPid, RigidBody, VerificationFailure, distance, expm, hat,

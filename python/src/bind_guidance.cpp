@@ -40,6 +40,7 @@ std::unique_ptr<OwnedMission> make_mission(const std::vector<Vec3>& waypoints, d
   p.f_max = f_max;
   p.cruise_speed = cruise_speed;
   p.pointing_tolerance = pointing_tolerance;
+  p.brake_speed = guidance::default_brake_speed(p);  // as in scenario files
   control::QuaternionPidGains g;
   g.kp = kp;
   g.ki = ki;

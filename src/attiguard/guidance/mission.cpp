@@ -17,6 +17,7 @@ const char* mode_name(Mode mode) noexcept {
     case Mode::decelerate: return "decelerate";
     case Mode::fine: return "fine";
     case Mode::done: return "done";
+    case Mode::brake: return "brake";
   }
   return "?";
 }
@@ -32,6 +33,8 @@ const char* reason_name(TransitionReason reason) noexcept {
     case TransitionReason::main_cutoff_speed: return "main_cutoff_speed";
     case TransitionReason::closest_approach: return "closest_approach";
     case TransitionReason::accuracy_met: return "accuracy_met";
+    case TransitionReason::speed_left: return "speed_left";
+    case TransitionReason::braked: return "braked";
     case TransitionReason::replan: return "replan";
   }
   return "?";
@@ -93,6 +96,7 @@ void Mission::enter(Mode next, const MissionInputs& in) noexcept {
   if (next == Mode::fine) {
     q_hold_ = q_last_;
   }
+
   mode_ = next;
   if (next == Mode::align) {
     start_leg(in);
@@ -106,9 +110,13 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
   const double a_max = params_.T_max / params_.mass;
   const bool accel_distance_done =
       dist < (1.0 - params_.acceleration_fraction) * leg_distance_;
+  // braking_point timing: the flip must start flip_lead_time before braking must begin.
+  const bool flip_due = dist - speed * speed / (2.0 * a_max) <= speed * params_.flip_lead_time;
   switch (mode_) {
     case Mode::accelerate:
-      if (accel_distance_done) {
+      // With braking_point timing, acceleration also ends when the flip is already due: on a
+      // short leg (a re-plan) the fraction rule alone would leave no room to flip and brake.
+      if (accel_distance_done || (params_.flip_timing == FlipTiming::braking_point && flip_due)) {
         next = Mode::coast;
         return TransitionReason::acceleration_done;
       }
@@ -122,7 +130,7 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
       if (params_.flip_timing == FlipTiming::immediate) {
         flip = accel_distance_done;
       } else {
-        flip = dist - speed * speed / (2.0 * a_max) <= speed * params_.flip_lead_time;
+        flip = flip_due;
       }
       if (flip) {
         next = Mode::flip;
@@ -142,8 +150,18 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
       // Closest approach: the angle between e and v reaches acos(c_full), where the velocity
       // projection starts to fade out (e·v = 0 exactly at the closest approach).
       if (e_i.dot(in.v_i) <= params_.projection.cos_full * dist * speed) {
+        if (brake_needed(speed)) {
+          next = Mode::brake;
+          return TransitionReason::speed_left;
+        }
         next = Mode::fine;
         return TransitionReason::closest_approach;
+      }
+      break;
+    case Mode::brake:
+      if (speed <= params_.main_cutoff_speed) {
+        next = Mode::fine;
+        return TransitionReason::braked;
       }
       break;
     case Mode::fine: {
@@ -155,6 +173,10 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
         return TransitionReason::accuracy_met;
       }
       if (dist > params_.replan_distance) {
+        if (brake_needed(speed)) {
+          next = Mode::brake;
+          return TransitionReason::speed_left;
+        }
         next = Mode::align;
         return TransitionReason::replan;
       }
@@ -169,7 +191,12 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
 }
 
 DesiredAttitude Mission::evaluate(const MissionInputs& in, const Vec3& a_i) noexcept {
-  if (mode_ == Mode::fine || mode_ == Mode::done) {
+  if (mode_ == Mode::brake) {
+    // x_b against the velocity, reached from the current attitude by the shortest arc (no
+    // roll), re-aimed every sample: a misaligned engine turns the velocity while braking.
+    q_hold_ = lie::quat_multiply(lie::shortest_arc_quat(in.R_ib.col(0), Vec3(-in.v_i)), q_ib_);
+  }
+  if (mode_ == Mode::fine || mode_ == Mode::done || mode_ == Mode::brake) {
     DesiredAttitude hold;
     hold.q_id = q_hold_;
     hold.error.q_ie = q_hold_;
@@ -253,6 +280,8 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
                                : e_i.norm();
     thrust = deceleration_thrust(params_.mass, speed, d_brake, params_.T_max,
                                  params_.braking_margin);  // (15)-(16)
+  } else if (pointed && mode_ == Mode::brake) {
+    thrust = params_.T_max;
   }
   cmd.inputs.thrust = thrust;
   if (mode_ == Mode::fine) {

@@ -9,6 +9,7 @@
 /// reason) in the command of the step where it happens. The step is noexcept and
 /// allocation-free: the waypoints are a non-owning span and the caller records transitions.
 
+#include <cmath>
 #include <span>
 
 #include "attiguard/control/quaternion_pid.hpp"
@@ -28,7 +29,14 @@ enum class Mode : int {
   decelerate = 4,  ///< T from (15)-(16) with the velocity projection (17)-(24)
   fine = 5,        ///< RCT law (28)-(30), attitude held, until δ_p / δ_v are met
   done = 6,        ///< every waypoint visited; attitude held, no thrust
+  /// Beyond the paper: main engine against the velocity (x_d = −v̂ held) until ‖v‖ ≤ the cut-off
+  /// speed, entered when the speed left is more than the RCT can stop within half the re-plan
+  /// distance (after a closest approach, or before a re-plan); then fine. See brake_speed.
+  brake = 7,
 };
+
+/// Number of modes (codes 0 … kModeCount − 1).
+inline constexpr int kModeCount = 8;
 
 /// Lower-case name of a mode ("align", …) of the waypoint paper's Algorithm 1 as a state machine.
 [[nodiscard]] const char* mode_name(Mode mode) noexcept;
@@ -51,6 +59,8 @@ enum class TransitionReason : int {
   closest_approach,      ///< ∠(e, v) ≥ acos(c_full) (≈ 90°) while decelerating: closest approach
   accuracy_met,          ///< fine control: ‖e‖ < δ_p and ‖v‖ < δ_v (or only ‖v‖ < δ_v if κ_p = 0)
   replan,                ///< fine control: ‖e‖ > replan distance, the leg restarts with align
+  speed_left,            ///< ‖v‖ > brake speed at a closest approach or a re-plan: brake first
+  braked,                ///< brake: ‖v‖ ≤ main-engine cut-off speed
 };
 
 /// Lower-case name of a transition reason ("pointing_reached", …), waypoint paper Algorithm 1.
@@ -72,6 +82,10 @@ struct MissionParams {
   double braking_margin{1.0};         ///< γ of deceleration_thrust(): (16) fires at γ T_max
   double main_cutoff_speed{0.02};     ///< decelerate → fine below this speed [m/s]
   double replan_distance{50.0};       ///< fine → align (restart leg) beyond this distance [m]
+  /// Brake with the main engine (Mode::brake) when more speed than this is left after a closest
+  /// approach or at a re-plan [m/s]; ≤ 0: never (Algorithm 1 as printed). Scenario default:
+  /// √(replan_distance · f_max/m), the speed the RCT stop within half the re-plan distance.
+  double brake_speed{0.0};
   bool velocity_projection{true};     ///< (17)-(22) while flipping/decelerating
   VelocityProjectionParams projection{};
   FlipTiming flip_timing{FlipTiming::immediate};
@@ -81,6 +95,12 @@ struct MissionParams {
   double reanchor_cos{0.0};           ///< re-anchor the error-frame chart when cos ϑ < this
   double e_floor{1e-6};               ///< [m], error_frame()
 };
+
+/// The default brake speed (beyond the waypoint paper): √(replan_distance · f_max / m), the speed
+/// the RCT alone stop within half the re-plan distance.
+[[nodiscard]] inline double default_brake_speed(const MissionParams& p) noexcept {
+  return std::sqrt(p.replan_distance * p.f_max / p.mass);
+}
 
 /// Measured state at a control sample.
 struct MissionInputs {
@@ -133,6 +153,10 @@ class Mission {
   [[nodiscard]] Quat continuous_q_ib(const lie::Mat3& R_ib) const noexcept;
   [[nodiscard]] TransitionReason state_transition(const MissionInputs& in, Mode& next) const noexcept;
   void enter(Mode next, const MissionInputs& in) noexcept;
+  /// More speed than the RCT can take back: brake with the main engine first (Mode::brake).
+  [[nodiscard]] bool brake_needed(double speed) const noexcept {
+    return params_.brake_speed > 0.0 && speed > params_.brake_speed;
+  }
   [[nodiscard]] DesiredAttitude evaluate(const MissionInputs& in, const Vec3& a_i) noexcept;
 
   MissionParams params_;

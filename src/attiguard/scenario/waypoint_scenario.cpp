@@ -108,7 +108,7 @@ WaypointScenario parse_waypoint(const Document& doc) {
   const TableReader g = root.table("guidance");
   declare(g, {"cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
               "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
-              "main_cutoff_speed", "replan_distance",
+              "main_cutoff_speed", "replan_distance", "brake_speed",
               "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
               "flip_timing", "flip_lead_time"});
   mp.cruise_speed = g.number("cruise_speed", NumberRule::positive());
@@ -126,6 +126,8 @@ WaypointScenario parse_waypoint(const Document& doc) {
       g.string_or("braking_distance", "along_velocity", distances) == "along_velocity";
   mp.main_cutoff_speed = g.number_or("main_cutoff_speed", 0.02, NumberRule::non_negative());
   mp.replan_distance = g.number_or("replan_distance", 50.0, NumberRule::positive());
+  mp.brake_speed =
+      g.number_or("brake_speed", guidance::default_brake_speed(mp), NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
   mp.projection.blend_speed = g.number_or("projection_blend_speed", 0.05, NumberRule::positive());
   const double full_deg =

@@ -199,7 +199,7 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
   }
   summary["transitions"] = tr;
   nlohmann::json modes = nlohmann::json::array();
-  for (int m = 0; m <= static_cast<int>(guidance::Mode::done); ++m) {
+  for (int m = 0; m < guidance::kModeCount; ++m) {
     modes.push_back(guidance::mode_name(static_cast<guidance::Mode>(m)));
   }
   summary["mode_names"] = modes;
@@ -227,6 +227,7 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
       {"braking_distance", mp.brake_along_velocity ? "along_velocity" : "norm"},
       {"main_cutoff_speed", mp.main_cutoff_speed},
       {"replan_distance", mp.replan_distance},
+      {"brake_speed", mp.brake_speed},
       {"velocity_projection", mp.velocity_projection},
       {"projection_blend_speed", mp.projection.blend_speed},
       {"flip_timing", mp.flip_timing == guidance::FlipTiming::immediate ? "immediate" : "braking_point"},

@@ -24,9 +24,11 @@ from .common import DPI
 
 _PREFERRED = (
     "min_pointing_margin", "max_torque_norm", "final_attitude_error", "max_V_minus_Gamma",
-    "total_delta_v", "delta_v", "final_omega_norm", "final_attitude_error_rad",
-    "max_energy_drift_rel",
+    "total_delta_v", "delta_v", "total_time", "max_final_position_error", "final_omega_norm",
+    "final_attitude_error_rad", "max_energy_drift_rel",
 )
+# Scatter y axis when a kind has no margin (waypoint): the mission's cost.
+_SCATTER_FALLBACK = ("total_time", "total_delta_v", "max_final_position_error")
 _MAX_PANELS = 12
 
 
@@ -126,9 +128,11 @@ def histograms(run: CampaignRun) -> Path:
 
 
 def scatter(run: CampaignRun) -> Path | None:
+    from matplotlib.ticker import MaxNLocator
     ok = np.array([s == "ok" for s in run.status])
     figures = _figures(run)
-    margins = [f for f in figures if "margin" in f] or figures
+    margins = ([f for f in figures if "margin" in f]
+               or [f for f in _SCATTER_FALLBACK if f in figures] or figures)
     if not margins:
         return None
     margin = margins[0]
@@ -143,6 +147,8 @@ def scatter(run: CampaignRun) -> Path | None:
                        color="tab:red", label="violation")
         ax.set_xlabel(p)
         ax.set_ylabel(margin)
+        ax.ticklabel_format(axis="x", useOffset=False)  # e.g. axis.x near 1: plain values
+        ax.xaxis.set_major_locator(MaxNLocator(4))
         ax.grid(True, alpha=0.4)
     fig.suptitle(f"{run.name}: {margin} against the dispersed values")
     path = run.dir / "campaign_scatter.png"

@@ -111,8 +111,12 @@ RunRecord run_one(const Campaign& c, long k, const scenario::RunOptions& options
       return r;
     }
   }
+  // A violation: a constraint flag `*_satisfied` is false, or the mission did not complete
+  // (`completed` of kinds waypoint and mission: a waypoint not reached within the duration).
   for (const auto& [key, value] : r.summary.items()) {
-    if (value.is_boolean() && key.ends_with("_satisfied") && !value.get<bool>()) r.violation = true;
+    if (value.is_boolean() && !value.get<bool>() && (key.ends_with("_satisfied") || key == "completed")) {
+      r.violation = true;
+    }
   }
   return r;
 }

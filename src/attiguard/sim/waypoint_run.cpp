@@ -164,7 +164,11 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
   nlohmann::json wps = nlohmann::json::array();
   nlohmann::json legs = nlohmann::json::array();
   double total_dv = 0.0;
+  double max_error = 0.0;  // over all waypoints (reached or not: an unreached one is far)
+  double max_speed = 0.0;
   for (const WaypointResult& w : res.waypoints) {
+    max_error = std::max(max_error, w.final_position_error);
+    max_speed = std::max(max_speed, w.final_speed);
     nlohmann::json j;
     j["index"] = w.index;
     j["arrival_time"] = w.reached ? nlohmann::json(w.arrival_time) : nlohmann::json(nullptr);
@@ -189,6 +193,8 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
   summary["completed"] = res.completed;
   summary["total_time"] = res.total_time;
   summary["total_delta_v"] = total_dv;
+  summary["max_final_position_error"] = max_error;  // campaign figures (docs/campaigns.md)
+  summary["max_final_speed"] = max_speed;
   summary["max_torque_norm"] = res.max_torque_norm;
   summary["steps"] = res.steps;
   summary["samples"] = res.samples;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 
 #include "attiguard/reach/conreach.hpp"
@@ -52,6 +54,7 @@ TEST(ReachPaper, Step0MetricMatchesEquation29) {
   ar::Mat3 Q1;
   Q1 << 0.989, -0.020, 0.010, -0.020, 0.962, 0.019, 0.010, 0.019, 0.991;
   EXPECT_LT((sol.Q - Q1).cwiseAbs().maxCoeff(), 0.005) << sol.Q;
+  std::printf("[ measured ] step 0: max |Q - Q1(29)| = %.4f\n", (sol.Q - Q1).cwiseAbs().maxCoeff());
   EXPECT_NEAR(sol.c, 0.1871, 1e-9);
   EXPECT_LE(sol.worst_eigenvalue, 0.0);
 }

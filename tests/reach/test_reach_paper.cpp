@@ -2,9 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
-
 #include <cmath>
+#include <cstdio>
 
 #include "attiguard/reach/conreach.hpp"
 #include "attiguard/reach/contraction_sdp.hpp"

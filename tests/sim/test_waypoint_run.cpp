@@ -60,8 +60,10 @@ TEST(WaypointRun, FinePositionControlReachesEveryWaypoint) {
 
 std::string doc_with(const std::string& from, const std::string& to);
 
-std::string fine_doc_with(const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::ifstream in(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/waypoint_fine.toml");
+/// examples/<file> as text with each `from` replaced once by its `to`.
+std::string example_with(const std::string& file,
+                         const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::ifstream in(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + file);
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
@@ -71,6 +73,10 @@ std::string fine_doc_with(const std::vector<std::pair<std::string, std::string>>
     if (pos != std::string::npos) text.replace(pos, from.size(), to);
   }
   return text;
+}
+
+std::string fine_doc_with(const std::vector<std::pair<std::string, std::string>>& edits) {
+  return example_with("waypoint_fine.toml", edits);
 }
 
 // Beyond the paper: the main engine misaligned by 1 deg (unknown to the guidance). Without the
@@ -130,14 +136,7 @@ TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {
 }
 
 std::string doc_with(const std::string& from, const std::string& to) {
-  std::ifstream in(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/waypoint_paper.toml");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  text.replace(pos, from.size(), to);
-  return text;
+  return example_with("waypoint_paper.toml", {{from, to}});
 }
 
 void expect_input_error(const std::string& text, const std::string& needle) {

@@ -126,6 +126,7 @@ TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto& g = test::rng();
   int completed = 0;
+  long brake_samples = 0;
   for (int trial = 0; trial < 1000; ++trial) {
     scenario::WaypointScenario sc;
     sc.name = "sweep";
@@ -151,6 +152,14 @@ TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
     sc.mission.position_accuracy = 0.5;
     sc.mission.speed_accuracy = 0.01;
     sc.max_wheel_torque = u(g) < 0.3 ? 2.0 : 0.0;
+    // Beyond the paper: brake mode on/off, a zero cut-off speed, a main engine up to 5 deg off.
+    sc.mission.brake_speed = u(g) < 0.3 ? 0.0 : 0.05 + u(g);
+    sc.mission.main_cutoff_speed = u(g) < 0.2 ? 0.0 : 0.02;
+    sc.mission.replan_distance = u(g) < 0.5 ? 50.0 : 5.0;
+    const double tilt = 5.0 * M_PI / 180.0 * u(g);
+    const double around = 2.0 * M_PI * u(g);
+    sc.main_thrust_axis_b = Vec3(std::cos(tilt), std::sin(tilt) * std::cos(around),
+                                 std::sin(tilt) * std::sin(around));
     sc.duration = 120.0;
     sc.integrator.step = 0.1;
     double worst = 0.0;
@@ -159,12 +168,14 @@ TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
           ASSERT_TRUE(y.all_finite());
           ASSERT_TRUE(c.q_id.allFinite() && c.omega_d_d.allFinite() && c.inputs.tau_b.allFinite());
           worst = std::max(worst, c.omega_d_d.norm());
+          brake_samples += c.mode == Mode::brake ? 1 : 0;
         });
     ASSERT_TRUE(res.finite) << "trial " << trial;
     ASSERT_TRUE(std::isfinite(worst));
     completed += res.completed ? 1 : 0;
   }
   RecordProperty("completed_within_120s", completed);
+  EXPECT_GT(brake_samples, 0);  // the brake mode was exercised
 }
 
 }  // namespace

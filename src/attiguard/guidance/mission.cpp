@@ -96,7 +96,6 @@ void Mission::enter(Mode next, const MissionInputs& in) noexcept {
   if (next == Mode::fine) {
     q_hold_ = q_last_;
   }
-
   mode_ = next;
   if (next == Mode::align) {
     start_leg(in);

@@ -91,6 +91,17 @@ TEST(ReachCli, UnprovableSafetyExitsWith4AfterWritingOutputs) {
   EXPECT_DOUBLE_EQ(j["first_failure_time"].get<double>(), 0.0);
 }
 
+// The nominal's integration error used to be covered by a fixed 1e-9: this file (ω_x grows as
+// e^{20t}, its bound 5e-9 below the true maximum) was certified `safe`. Now: cannot_prove, exit 4.
+TEST(ReachCli, Growth20FileIsCannotProveWithExit4) {
+  const auto out = fresh_dir("reach_growth20_out");
+  const auto r = run_cli("reach tests/data/reach/growth20.toml --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find("omega_abs_max cannot be proved"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
+  EXPECT_EQ(j["verdict"], "cannot_prove");
+}
+
 TEST(ReachCli, UnknownKeyAndMissingFileAreInvalidInput) {
   const auto p = write_scenario("typo", paper_body("", "horizn = 2.0\n"));
   auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");

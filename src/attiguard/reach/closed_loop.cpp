@@ -71,6 +71,11 @@ IntervalMat3 LinearOmegaLoop::A_enclosure(const AttitudeBall&, const Box3&) cons
 IntervalMat3 LinearOmegaLoop::B_enclosure(const AttitudeBall&, const Box3&) const {
   return IntervalMat3::point(M_);
 }
+PolynomialField LinearOmegaLoop::polynomial_field() const {
+  PolynomialField f;
+  f.linear = M_;
+  return f;
+}
 LmiEnclosure LinearOmegaLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) const {
   // A = 0 and B = M are constant and ω̂ is linear in ω: the 8 vertices are exact.
   LmiEnclosure e;
@@ -99,6 +104,12 @@ IntervalMat3 RigidBodyLoop::A_enclosure(const AttitudeBall&, const Box3&) const 
 }
 IntervalMat3 RigidBodyLoop::B_enclosure(const AttitudeBall&, const Box3& box) const {
   return gyroscopic_enclosure(G_, box);
+}
+PolynomialField RigidBodyLoop::polynomial_field() const {
+  PolynomialField f;
+  f.constant = Jinv_ * tau_;
+  f.quadratic = gyroscopic_quadratic(J_, Jinv_);
+  return f;
 }
 LmiEnclosure RigidBodyLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) const {
   // A = 0, B is linear in ω, ω̂ is linear in ω, nothing depends on R: vertices are exact.
@@ -154,6 +165,20 @@ IntervalMat3 PdLoop::B_enclosure(const AttitudeBall&, const Box3& box) const {
   IntervalMat3 g = gyroscopic_enclosure(G_, box);
   const Mat3 damp = kd_ * Jinv_;
   return {g.lo - damp, g.hi - damp};
+}
+PolynomialField PdLoop::polynomial_field() const {
+  PolynomialField f;
+  f.linear = -kd_ * Jinv_;
+  f.quadratic = gyroscopic_quadratic(J_, Jinv_);
+  // k_p J⁻¹ vee(sk(RᵀR_g)) is linear in R: one column per entry R_rs.
+  for (int r = 0; r < 3; ++r) {
+    for (int s = 0; s < 3; ++s) {
+      Mat3 unit = Mat3::Zero();
+      unit(r, s) = 1.0;
+      f.linear_R.col(3 * r + s) = kp_ * Jinv_ * lie::vee(lie::sk(unit.transpose() * Rg_));
+    }
+  }
+  return f;
 }
 LmiEnclosure PdLoop::lmi_enclosure(const AttitudeBall& att, const Box3& box) const {
   // B and ω̂ are affine in ω and independent of R: vertices of the box, exact. A depends on R

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "attiguard/reach/interval.hpp"
+#include "attiguard/reach/polynomial_field.hpp"
 
 namespace attiguard::reach {
 
@@ -62,6 +63,9 @@ class ClosedLoop {
   /// True when X_ω = M ω + b independently of R: the ω-flow is affine (ω-reach sets of convex
   /// sets stay convex).
   [[nodiscard]] virtual bool omega_flow_affine() const = 0;
+  /// X_ω as the exact polynomial it is (polynomial_field.hpp): what the bound on the nominal's
+  /// integration error differentiates.
+  [[nodiscard]] virtual PolynomialField polynomial_field() const = 0;
 
   /// Mean-value enclosure of X_ω over the set: X_ω(R_c, ω_c) ± (‖row_k |A|‖ ρ + |B| rad(ω)).
   [[nodiscard]] Box3 omega_dot_enclosure(const AttitudeBall& att, const Box3& box) const;
@@ -80,6 +84,7 @@ class LinearOmegaLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
   [[nodiscard]] bool omega_flow_affine() const override { return true; }
+  [[nodiscard]] PolynomialField polynomial_field() const override;
   [[nodiscard]] const Mat3& matrix() const noexcept { return M_; }
 
  private:
@@ -99,6 +104,7 @@ class RigidBodyLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
   [[nodiscard]] bool omega_flow_affine() const override { return false; }
+  [[nodiscard]] PolynomialField polynomial_field() const override;
 
  private:
   Mat3 J_, Jinv_;
@@ -119,6 +125,7 @@ class PdLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return true; }
   [[nodiscard]] bool omega_flow_affine() const override { return false; }
+  [[nodiscard]] PolynomialField polynomial_field() const override;
   /// Bound on ‖A(R, ·) − A_center‖₂ over the attitude ball (A does not depend on ω).
   [[nodiscard]] double a_deviation_bound(const AttitudeBall& att) const;
 

@@ -148,18 +148,15 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   const int m = s.substeps;
   const double dt = s.horizon / N;
 
-  // Nominal at every sub-step boundary, and a half-step run for the error allowance.
+  // Nominal at every sub-step boundary; its integration error is bounded by the tube.
   std::vector<double> times;
   for (int i = 0; i < N; ++i) {
     for (int j = 0; j < m; ++j) times.push_back(i * dt + j * dt / m);
   }
   times.push_back(s.horizon);
   res.nominal.resize(times.size());
-  std::vector<NominalPoint> fine(times.size());
   simulate(loop, initial.R0, initial.omega0, times, s.integrator_step,
            [&](std::size_t k, const Mat3& R, const Vec3& w) { res.nominal[k] = {times[k], R, w}; });
-  simulate(loop, initial.R0, initial.omega0, times, 0.5 * s.integrator_step,
-           [&](std::size_t k, const Mat3& R, const Vec3& w) { fine[k] = {times[k], R, w}; });
   for (const auto& p : res.nominal) {
     if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
   }
@@ -220,9 +217,14 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
     res.sdp_solves += ch.solves;
 
     const std::size_t k1 = static_cast<std::size_t>((i + 1) * m);
-    const double err = lie::distance(res.nominal[k1].R, fine[k1].R) +
-                       (res.nominal[k1].omega - fine[k1].omega).norm();
-    st.numerical_allowance = 10.0 * err * std::sqrt(std::max(lambda_max(st.Q), lambda_max(st.P))) + 1e-12;
+    // The ball's centre is the computed nominal point; the exact trajectory from the previous
+    // centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in G_{Q×P} within
+    // √(λ_max(Q) e_R² + λ_max(P) e_ω²) (docs/reach.md, "Nominal error bound").
+    const Deviation& e = state_tube.nominal_error;
+    st.nominal_error_R = e(4);
+    st.nominal_error_omega = e(3);
+    st.numerical_allowance =
+        std::sqrt(lambda_max(st.Q) * e(4) * e(4) + lambda_max(st.P) * e(3) * e(3)) * (1.0 + 1e-12);
     st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
     st.R = res.nominal[k1].R;
     st.omega = res.nominal[k1].omega;

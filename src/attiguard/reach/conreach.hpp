@@ -2,7 +2,7 @@
 /// @file conreach.hpp
 /// The ConReach loop (contraction-reachability paper, Algorithm 1): metric balls
 /// B_{Q_i×P_i}((R_i, ω_i), r_i) along a nominal simulation, r_{i+1} = r_i e^{c_{i+1}(t_{i+1}−t_i)}
-/// (+ a numerical-error allowance for the nominal), with (c, Q, P) per step from the SDP (20)
+/// + the bound of the nominal's integration error over the step (tube.hpp), with (c, Q, P) per step from the SDP (20)
 /// over the enclosure U_i of tube.hpp, chosen either by the paper's line search or by
 /// minimising the bi-invariant enclosure of the resulting ball.
 
@@ -73,7 +73,9 @@ struct ReachStep {
   Vec3 omega{Vec3::Zero()};       ///< nominal ω_{i+1}
   double attitude_radius{0.0};    ///< r_{i+1}/√λ_min(Q_{i+1}): bi-invariant attitude enclosure
   Vec3 omega_half_widths{Vec3::Zero()};  ///< half-widths of the box around the P-ball
-  double numerical_allowance{0.0};  ///< added to r for the nominal's integration error
+  double numerical_allowance{0.0};  ///< added to r: the nominal's error bound in G_{Q×P}
+  double nominal_error_R{0.0};      ///< bound on d(R*(t_{i+1}), R_{i+1}) (nominal's error)
+  double nominal_error_omega{0.0};  ///< bound on ‖ω*(t_{i+1}) − ω_{i+1}‖
   bool lmi_exact{false};
   double lmi_rho{0.0};
   bool fallback{false};           ///< no SDP accepted: Q = P = sI at c_max

@@ -98,6 +98,8 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
                      {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
                      {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
                      {"numerical_allowance", st.numerical_allowance},
+                     {"nominal_error_R", st.nominal_error_R},
+                     {"nominal_error_omega", st.nominal_error_omega},
                      {"safe", verdict.step_safe.empty() ? true : static_cast<bool>(verdict.step_safe[static_cast<std::size_t>(st.index)])},
                      {"trials", trials}});
   }
@@ -205,6 +207,7 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
   if (sc.soundness.samples > 0) {
     const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
     j["soundness"] = {{"samples", rep.samples}, {"inside", rep.inside}, {"max_ratio", rep.max_ratio},
+                      {"tube_inside", rep.tube_inside}, {"tube_max_excess", rep.tube_max_excess},
                       {"wall_time_s", rep.wall_time_s}};
     io::CsvWriter csv(out_dir / "samples.csv",
                       {"sample", "t", "r_x", "r_y", "r_z", "omega_x", "omega_y", "omega_z"});
@@ -223,6 +226,13 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
       std::ostringstream os;
       os << "soundness check failed: " << rep.samples - rep.inside << " of " << rep.samples
          << " sampled trajectories leave their ball (first at t = " << rep.first_violation_time << " s)";
+      throw NumericalError(os.str());
+    }
+    if (rep.tube_inside != rep.samples) {
+      std::ostringstream os;
+      os << "soundness check failed: " << rep.samples - rep.tube_inside << " of " << rep.samples
+         << " sampled trajectories leave a state-tube segment or U_i (first at t = "
+         << rep.tube_first_violation_time << " s, by " << rep.tube_max_excess << ")";
       throw NumericalError(os.str());
     }
   } else {

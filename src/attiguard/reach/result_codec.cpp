@@ -48,7 +48,8 @@ json step_json(const ReachStep& s) {
           {"abox", ball(s.attitude_box)}, {"tube", tube}, {"c_id", s.c_identity}, {"c", s.c},
           {"Q", dense(s.Q)}, {"P", dense(s.P)}, {"r", s.r}, {"R", dense(s.R)}, {"w", dense(s.omega)},
           {"ar", s.attitude_radius}, {"whw", dense(s.omega_half_widths)},
-          {"na", s.numerical_allowance}, {"exact", s.lmi_exact}, {"rho", s.lmi_rho},
+          {"na", s.numerical_allowance}, {"neR", s.nominal_error_R}, {"new", s.nominal_error_omega},
+          {"exact", s.lmi_exact}, {"rho", s.lmi_rho},
           {"fb", s.fallback}, {"solves", s.sdp_solves}, {"trials", trials}};
 }
 
@@ -77,6 +78,8 @@ ReachStep step_from(const json& j) {
   s.attitude_radius = j.at("ar").get<double>();
   dense(j.at("whw"), s.omega_half_widths);
   s.numerical_allowance = j.at("na").get<double>();
+  s.nominal_error_R = j.at("neR").get<double>();
+  s.nominal_error_omega = j.at("new").get<double>();
   s.lmi_exact = j.at("exact").get<bool>();
   s.lmi_rho = j.at("rho").get<double>();
   s.fallback = j.at("fb").get<bool>();

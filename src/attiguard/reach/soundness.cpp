@@ -16,6 +16,16 @@ namespace {
 /// sphere of the initial ball, where rounding gives ratios of 1 ± 1e-16.
 constexpr double kRoundoff = 1e-12;
 
+/// How far (R, ω) lies outside the attitude ball and the ω box (0 inside, up to rounding).
+double excess(const AttitudeBall& att, const Box3& box, const Mat3& R, const Vec3& w) {
+  double e = lie::distance(att.center, R) - att.radius * (1.0 + kRoundoff);
+  for (int k = 0; k < 3; ++k) {
+    const double tol = kRoundoff * (1.0 + std::abs(w(k)));
+    e = std::max({e, box.lo(k) - tol - w(k), w(k) - box.hi(k) - tol});
+  }
+  return std::max(e, 0.0);
+}
+
 Vec3 sample_ball(std::mt19937_64& g, double radius, bool on_boundary) {
   std::normal_distribution<double> n(0.0, 1.0);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -41,6 +51,9 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   for (const auto& p : r0.nominal) times.push_back(p.t);
   const std::size_t m = (times.size() - 1) / r0.steps.size();
   std::atomic<long> inside{0};
+  std::atomic<long> tube_inside{0};
+  double tube_excess = 0.0;
+  double first_tube_violation = -1.0;
   std::mutex mutex;
   double max_ratio = 0.0;
   double first_violation = -1.0;
@@ -64,6 +77,8 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
     const ReachResult& res = results[cell];
     double worst = 0.0;
     double violation = -1.0;
+    double worst_excess = 0.0;
+    double tube_violation = -1.0;
     const bool keep = s < static_cast<long>(rep.kept.size());
     SampleTrajectory traj;
     simulate(loop, R, w, times, settings.step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
@@ -71,6 +86,15 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
         traj.t.push_back(times[k]);
         traj.R.push_back(Rk);
         traj.omega.push_back(wk);
+      }
+      // Tube segments j = k − 1 (ending at t_k) and j = k (starting there), and their U_i.
+      for (const std::size_t j : {k - 1, k}) {
+        if (j >= res.steps.size() * m) continue;  // k − 1 wraps for k = 0
+        const ReachStep& st = res.steps[j / m];
+        const double ex = std::max(excess(st.state_tube[j % m].attitude, st.state_tube[j % m].omega, Rk, wk),
+                                   excess(st.attitude_box, st.omega_box, Rk, wk));
+        if (!(ex <= 0.0) && tube_violation < 0.0) tube_violation = times[k];
+        worst_excess = std::max(worst_excess, std::isfinite(ex) ? ex : 1e300);
       }
       if (k % m != 0) return;
       const std::size_t i = k / m;
@@ -85,7 +109,12 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
       worst = std::max(worst, std::isfinite(ratio) ? ratio : 1e300);
     });
     if (violation < 0.0) ++inside;
+    if (tube_violation < 0.0) ++tube_inside;
     std::lock_guard<std::mutex> lock(mutex);
+    tube_excess = std::max(tube_excess, worst_excess);
+    if (tube_violation >= 0.0 && (first_tube_violation < 0.0 || tube_violation < first_tube_violation)) {
+      first_tube_violation = tube_violation;
+    }
     max_ratio = std::max(max_ratio, worst);
     if (violation >= 0.0 && (first_violation < 0.0 || violation < first_violation)) first_violation = violation;
     if (keep) rep.kept[static_cast<std::size_t>(s)] = std::move(traj);
@@ -93,6 +122,9 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   rep.inside = inside.load();
   rep.max_ratio = max_ratio;
   rep.first_violation_time = first_violation;
+  rep.tube_inside = tube_inside.load();
+  rep.tube_max_excess = tube_excess;
+  rep.tube_first_violation_time = first_tube_violation;
   rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return rep;
 }

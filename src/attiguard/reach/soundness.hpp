@@ -2,8 +2,11 @@
 /// @file soundness.hpp
 /// Empirical soundness check of ConReach results: simulate sampled initial states of the whole
 /// initial set and verify that at every t_i each state lies in the computed ball of its cell,
-/// using the upper bound of d_Q (metrics.hpp), i.e. √(d_Q,up² + d_P²) ≤ r_i. Half of the samples
-/// lie on the boundary of the initial set (‖log(R0ᵀR)‖ = a, ‖ω − ω0‖ = b), the rest inside.
+/// using the upper bound of d_Q (metrics.hpp), i.e. √(d_Q,up² + d_P²) ≤ r_i, and that at every
+/// sub-step time it lies in the state-tube segments that start or end there (attitude ball and
+/// ω box) and in the U_i of its step (ω box and attitude ball): the sets the safety check uses.
+/// Half of the samples lie on the boundary of the initial set (‖log(R0ᵀR)‖ = a, ‖ω − ω0‖ = b),
+/// the rest inside.
 
 #include <cstdint>
 #include <vector>
@@ -32,6 +35,9 @@ struct SoundnessReport {
   long inside{0};            ///< samples inside their ball at every t_i
   double max_ratio{0.0};     ///< max over samples and t_i of (upper distance)/r_i
   double first_violation_time{-1.0};  ///< -1 when none
+  long tube_inside{0};        ///< samples inside every tube segment and U_i at every sub-step time
+  double tube_max_excess{0.0};  ///< largest distance outside a segment or U_i (ω: per axis; R: rad)
+  double tube_first_violation_time{-1.0};  ///< -1 when none
   std::vector<SampleTrajectory> kept;
   double wall_time_s{0.0};
 };

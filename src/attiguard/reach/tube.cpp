@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/reach/nominal_error.hpp"
 
 namespace attiguard::reach {
 
@@ -55,6 +56,8 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
   if (nominal.size() < 2) throw NumericalError("ConReach tube: needs at least two nominal points");
   TubeResult out;
   Deviation z = start.cwiseMax(0.0);
+  Deviation e = Deviation::Zero();  // the exact trajectory from nominal.front(): its deviation
+  const PolynomialField field = loop.polynomial_field();
   bool first = true;
   for (std::size_t j = 0; j + 1 < nominal.size(); ++j) {
     const NominalPoint& p0 = nominal[j];
@@ -112,16 +115,35 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
     for (int k = 0; k < 5; ++k) Mplus(k, k) = std::max(0.0, Mplus(k, k));
     const Mat5 E = expm(M * h);
     const Mat5 Eplus = expm(Mplus * h);
-    Deviation z1 = (E * z).cwiseMax(0.0) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
-    const Deviation zsup = (Eplus * z).cwiseMax(0.0) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
 
-    // 3. Segment enclosure: nominal tent ± sup deviation, intersected with G.
+    // The nominal's integration error over the sub-step: x* (the exact solution from p0, inside
+    // G over [s, s+h] since p0 is in the set) ends within eps of p1 (nominal_error.hpp).
+    std::string why;
+    const std::optional<NominalStepError> step_error =
+        nominal_step_error(field, p0.R, p0.omega, p1.R, p1.omega, h, G, rhoG, why);
+    if (!step_error) {
+      std::ostringstream os;
+      os << "ConReach tube: the nominal's integration error cannot be bounded over [" << p0.t
+         << ", " << p1.t << "] s (" << why << "): cannot prove; use more sub-steps or a smaller "
+         << "integrator_step";
+      throw VerificationFailure(os.str());
+    }
+    const Deviation& eps = step_error->bound;
+    // Deviations from x*: z(s+h) ≤ exp(Mh) z(s), sup over the sub-step ≤ exp(M⁺h) z(s); from p1
+    // add eps (triangle inequality, componentwise and in d). The factor and 1e-15 cover the
+    // rounding of the 5×5 products.
+    Deviation z1 = ((E * z).cwiseMax(0.0) + eps) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
+    const Deviation zsup = (Eplus * z).cwiseMax(0.0) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
+    e = ((E * e).cwiseMax(0.0) + eps) * (1.0 + 1e-12);
+    out.max_step_error = out.max_step_error.cwiseMax(eps);
+
+    // 3. Segment enclosure: the tent of x* (ω*(s) = ω_0, ω*(s+h) ∈ ω_1 ± eps, slopes in F)
+    // ± sup deviation, intersected with G.
     Box3 nom;
     for (int k = 0; k < 3; ++k) {
-      nom.lo(k) = tent_min(p0.omega(k), p1.omega(k), F.lo(k), F.hi(k), h);
-      nom.hi(k) = tent_max(p0.omega(k), p1.omega(k), F.lo(k), F.hi(k), h);
+      nom.lo(k) = tent_min(p0.omega(k), p1.omega(k) - eps(k), F.lo(k), F.hi(k), h);
+      nom.hi(k) = tent_max(p0.omega(k), p1.omega(k) + eps(k), F.lo(k), F.hi(k), h);
     }
-    nom = nom.inflated(Vec3::Constant(1e-9));  // allowance for the nominal's integration error
     const Vec3 devsup = zsup.head<3>().cwiseMin(zsup(3));
     // Tent of the whole set: every ω_k(t) is C¹ with derivative in F on G and its values at
     // s and s+h lie in the deviation boxes there (tent_min/max are monotone in a and b).
@@ -131,7 +153,6 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
       set_tent.lo(k) = tent_min(p0.omega(k) - dev0(k), p1.omega(k) - dev1(k), F.lo(k), F.hi(k), h);
       set_tent.hi(k) = tent_max(p0.omega(k) + dev0(k), p1.omega(k) + dev1(k), F.lo(k), F.hi(k), h);
     }
-    set_tent = set_tent.inflated(Vec3::Constant(1e-9));
     TubeSegment seg;
     seg.t0 = p0.t;
     seg.t1 = p1.t;
@@ -154,6 +175,7 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
     z = z1;
   }
   out.end = z;
+  out.nominal_error = e;
   return out;
 }
 

@@ -14,8 +14,12 @@
 ///     (Dini derivatives; the last from the body velocity ω − Eᵀω_n of E = R_nᵀR). Hence
 ///     z(s+h) ≤ exp(M h) z(s) (Kamke/Metzler comparison), and sup over the sub-step ≤ exp(M⁺h) z(s)
 ///     with M⁺ = M with negative diagonal entries set to 0.
-///  3. The sub-step box: the nominal's "tent" bounds (from ω_n(s), ω_n(s+h) and X_ω(G)) ± the
-///     sup deviation, intersected with G. docs/reach.md gives the proofs.
+///  3. The sub-step box: the "tent" bounds of x*, the exact solution from the nominal point at s
+///     (from ω_n(s), ω_n(s+h) ± ε and X_ω(G)) ± the sup deviation, intersected with G.
+/// The deviations are taken from x*, and ε — a bound on the nominal's integration error over the
+/// sub-step, |x*(s+h) − nominal(s+h)| ≤ ε (nominal_error.hpp) — is added at every sub-step end,
+/// so the tube, U_i and the ball radii rest on no integration-error allowance.
+/// docs/reach.md ("Enclosure U_i", "Nominal error bound") gives the proofs.
 
 #include <span>
 #include <vector>
@@ -45,12 +49,17 @@ struct TubeSegment {
 struct TubeResult {
   std::vector<TubeSegment> segments;  ///< one per sub-step
   Deviation end{Deviation::Zero()};   ///< deviation bounds at the last nominal point
+  /// Deviation bounds of the exact trajectory from nominal.front() at the last nominal point:
+  /// the nominal's integration error over the whole span.
+  Deviation nominal_error{Deviation::Zero()};
+  Deviation max_step_error{Deviation::Zero()};  ///< largest ε of one sub-step, componentwise
   Box3 omega_hull;                    ///< hull of the segments' ω boxes
   AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
 };
 
 /// Propagates `start` (valid at nominal.front()) along the nominal points (≥ 2, increasing t).
-/// Throws NumericalError when no a priori enclosure is found (diverging tube).
+/// Throws NumericalError when no a priori enclosure is found (diverging tube), and
+/// VerificationFailure when the nominal's integration error cannot be bounded on a sub-step.
 [[nodiscard]] TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
                                         const Deviation& start);
 

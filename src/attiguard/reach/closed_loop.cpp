@@ -1,8 +1,9 @@
 #include "attiguard/reach/closed_loop.hpp"
 
-#include <Eigen/SVD>
 #include <cmath>
 #include <stdexcept>
+
+#include "attiguard/core/errors.hpp"
 
 namespace attiguard::reach {
 
@@ -43,14 +44,18 @@ IntervalMat3 gyroscopic_enclosure(const std::array<Mat3, 3>& G, const Box3& box)
   return IntervalMat3::around(center, rad);
 }
 
-Mat3 invert_checked(const Mat3& J, const char* what) {
-  if (!J.allFinite() || std::abs(J.determinant()) < 1e-300) {
-    throw std::invalid_argument(std::string(what) + ": singular or non-finite matrix");
-  }
-  return J.inverse();
-}
 
 }  // namespace
+
+PolynomialField ClosedLoop::polynomial_field() const {
+  const std::optional<PolynomialField> f =
+      probe_polynomial_field([this](const Mat3& R, const Vec3& w) { return omega_dot(R, w); });
+  if (!f) {
+    throw NumericalError("ConReach: closed loop '" + name() +
+                         "' is not a polynomial c + B w + (w^T Q_a w) + L vec(R) (reach/polynomial_field.hpp)");
+  }
+  return *f;
+}
 
 Box3 ClosedLoop::omega_dot_enclosure(const AttitudeBall& att, const Box3& box) const {
   return mean_value_box(omega_dot(att.center, box.center()), A_enclosure(att, box), att.radius,
@@ -60,7 +65,7 @@ Box3 ClosedLoop::omega_dot_enclosure(const AttitudeBall& att, const Box3& box) c
 // ---- LinearOmegaLoop -------------------------------------------------------------------------
 
 LinearOmegaLoop::LinearOmegaLoop(const Mat3& M) : M_(M) {
-  if (!M.allFinite()) throw std::invalid_argument("linear_omega: non-finite matrix");
+  if (!M.allFinite()) throw InputError("linear_omega: non-finite matrix");
 }
 Vec3 LinearOmegaLoop::omega_dot(const Mat3&, const Vec3& omega) const { return M_ * omega; }
 Mat3 LinearOmegaLoop::A(const Mat3&, const Vec3&) const { return Mat3::Zero(); }
@@ -70,11 +75,6 @@ IntervalMat3 LinearOmegaLoop::A_enclosure(const AttitudeBall&, const Box3&) cons
 }
 IntervalMat3 LinearOmegaLoop::B_enclosure(const AttitudeBall&, const Box3&) const {
   return IntervalMat3::point(M_);
-}
-PolynomialField LinearOmegaLoop::polynomial_field() const {
-  PolynomialField f;
-  f.linear = M_;
-  return f;
 }
 LmiEnclosure LinearOmegaLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) const {
   // A = 0 and B = M are constant and ω̂ is linear in ω: the 8 vertices are exact.
@@ -87,29 +87,23 @@ LmiEnclosure LinearOmegaLoop::lmi_enclosure(const AttitudeBall&, const Box3& box
 // ---- RigidBodyLoop ---------------------------------------------------------------------------
 
 RigidBodyLoop::RigidBodyLoop(const Mat3& J, const Vec3& torque_b)
-    : J_(J), Jinv_(invert_checked(J, "rigid body inertia")), tau_(torque_b),
-      G_(gyroscopic_basis(J_, Jinv_)) {
-  if (!torque_b.allFinite()) throw std::invalid_argument("rigid body: non-finite torque");
+    : body_(J), tau_(torque_b), G_(gyroscopic_basis(J, body_.inertia_inverse())) {
+  if (!torque_b.allFinite()) throw InputError("rigid body: non-finite torque");
 }
 std::string RigidBodyLoop::name() const { return tau_.isZero(0.0) ? "free" : "constant_torque"; }
 Vec3 RigidBodyLoop::omega_dot(const Mat3&, const Vec3& w) const {
-  return Jinv_ * (-w.cross(J_ * w) + tau_);
+  return body_.angular_acceleration(w, tau_);
 }
 Mat3 RigidBodyLoop::A(const Mat3&, const Vec3&) const { return Mat3::Zero(); }
 Mat3 RigidBodyLoop::B(const Mat3&, const Vec3& w) const {
-  return Jinv_ * (lie::hat(J_ * w) - lie::hat(w) * J_);
+  const Mat3& J = body_.inertia();
+  return body_.inertia_inverse() * (lie::hat(J * w) - lie::hat(w) * J);
 }
 IntervalMat3 RigidBodyLoop::A_enclosure(const AttitudeBall&, const Box3&) const {
   return IntervalMat3::point(Mat3::Zero());
 }
 IntervalMat3 RigidBodyLoop::B_enclosure(const AttitudeBall&, const Box3& box) const {
   return gyroscopic_enclosure(G_, box);
-}
-PolynomialField RigidBodyLoop::polynomial_field() const {
-  PolynomialField f;
-  f.constant = Jinv_ * tau_;
-  f.quadratic = gyroscopic_quadratic(J_, Jinv_);
-  return f;
 }
 LmiEnclosure RigidBodyLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) const {
   // A = 0, B is linear in ω, ω̂ is linear in ω, nothing depends on R: vertices are exact.
@@ -125,24 +119,22 @@ LmiEnclosure RigidBodyLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) 
 // ---- PdLoop ----------------------------------------------------------------------------------
 
 PdLoop::PdLoop(const Mat3& J, double kp, double kd, const Mat3& R_g)
-    : J_(J), Jinv_(invert_checked(J, "pd inertia")), Rg_(R_g), kp_(kp), kd_(kd),
-      G_(gyroscopic_basis(J_, Jinv_)) {
+    : body_(J), Rg_(R_g), gains_{kp, kd}, G_(gyroscopic_basis(J, body_.inertia_inverse())) {
   if (!std::isfinite(kp) || !std::isfinite(kd) || !R_g.allFinite()) {
-    throw std::invalid_argument("pd: non-finite gains or reference");
+    throw InputError("pd: non-finite gains or reference");
   }
 }
 Vec3 PdLoop::omega_dot(const Mat3& R, const Vec3& w) const {
-  const Mat3 E = R.transpose() * Rg_;
-  const Vec3 tau = kp_ * lie::vee(lie::sk(E)) - kd_ * w;
-  return Jinv_ * (-w.cross(J_ * w) + tau);
+  return body_.angular_acceleration(w, control::pd_torque(R, w, Rg_, gains_));
 }
 Mat3 PdLoop::A(const Mat3& R, const Vec3&) const {
   // d/dt vee(sk(exp(−tα̂) E)) = −½ vee(α̂E + Eᵀα̂) = −½ (tr(E) I − E) α.
   const Mat3 E = R.transpose() * Rg_;
-  return -0.5 * kp_ * Jinv_ * (E.trace() * Mat3::Identity() - E);
+  return -0.5 * gains_.kp * body_.inertia_inverse() * (E.trace() * Mat3::Identity() - E);
 }
 Mat3 PdLoop::B(const Mat3&, const Vec3& w) const {
-  return Jinv_ * (lie::hat(J_ * w) - lie::hat(w) * J_ - kd_ * Mat3::Identity());
+  const Mat3& J = body_.inertia();
+  return body_.inertia_inverse() * (lie::hat(J * w) - lie::hat(w) * J - gains_.kd * Mat3::Identity());
 }
 IntervalMat3 PdLoop::A_enclosure(const AttitudeBall& att, const Box3&) const {
   // R = R_c exp(η̂), ‖η‖ ≤ ρ: E = exp(−η̂) E_c, ‖ΔE‖₂ ≤ 2 sin(ρ/2) =: s, so |ΔE_jk| ≤ s;
@@ -151,34 +143,20 @@ IntervalMat3 PdLoop::A_enclosure(const AttitudeBall& att, const Box3&) const {
   const double s = chord(att.radius);
   const double dtr = std::min(2.0 * att.radius, std::sqrt(6.0) * s);
   const Mat3 dD = 0.5 * (dtr * Mat3::Identity() + s * Mat3::Ones());
-  return IntervalMat3::around(Ac, kp_ * Jinv_.cwiseAbs() * dD);
+  return IntervalMat3::around(Ac, gains_.kp * body_.inertia_inverse().cwiseAbs() * dD);
 }
 double PdLoop::a_deviation_bound(const AttitudeBall& att) const {
   const double s = chord(att.radius);
   const double dtr = std::min(2.0 * att.radius, std::sqrt(6.0) * s);
-  Eigen::JacobiSVD<Mat3> svd(Jinv_);
-  const double spectral = kp_ * svd.singularValues()(0) * 0.5 * (dtr + s);
+  // ‖J⁻¹‖₂ = 1/λ_min(J).
+  const double spectral = gains_.kp / body_.min_principal_moment() * 0.5 * (dtr + s);
   const double frobenius = A_enclosure(att, Box3{}).radius().norm();
   return std::min(spectral, frobenius);
 }
 IntervalMat3 PdLoop::B_enclosure(const AttitudeBall&, const Box3& box) const {
   IntervalMat3 g = gyroscopic_enclosure(G_, box);
-  const Mat3 damp = kd_ * Jinv_;
+  const Mat3 damp = gains_.kd * body_.inertia_inverse();
   return {g.lo - damp, g.hi - damp};
-}
-PolynomialField PdLoop::polynomial_field() const {
-  PolynomialField f;
-  f.linear = -kd_ * Jinv_;
-  f.quadratic = gyroscopic_quadratic(J_, Jinv_);
-  // k_p J⁻¹ vee(sk(RᵀR_g)) is linear in R: one column per entry R_rs.
-  for (int r = 0; r < 3; ++r) {
-    for (int s = 0; s < 3; ++s) {
-      Mat3 unit = Mat3::Zero();
-      unit(r, s) = 1.0;
-      f.linear_R.col(3 * r + s) = kp_ * Jinv_ * lie::vee(lie::sk(unit.transpose() * Rg_));
-    }
-  }
-  return f;
 }
 LmiEnclosure PdLoop::lmi_enclosure(const AttitudeBall& att, const Box3& box) const {
   // B and ω̂ are affine in ω and independent of R: vertices of the box, exact. A depends on R

@@ -8,10 +8,11 @@
 /// Built-in closed loops:
 ///  - LinearOmegaLoop: X_ω = M ω (the paper's Sec. 6 example, M = J = diag(−2, −1, −3));
 ///    A = 0, B = M. M is a linear ω-dynamics matrix, not an inertia.
-///  - RigidBodyLoop:   J ω̇ = −ω × Jω + τ with τ constant (0: torque-free); A = 0,
-///    B = J⁻¹((Jω)^ − ω̂ J), affine in ω.
-///  - PdLoop:          τ = k_p sk(Rᵀ R_g)^∨ − k_d ω (PET-ERG paper, eq. (3)) to a fixed R_g;
-///    A = −(k_p/2) J⁻¹ (tr(E) I − E), E = Rᵀ R_g;  B = J⁻¹((Jω)^ − ω̂ J − k_d I).
+///  - RigidBodyLoop:   J ω̇ = −ω × Jω + τ with τ constant (0: torque-free; the plant of
+///    dynamics::RigidBody); A = 0, B = J⁻¹((Jω)^ − ω̂ J), affine in ω.
+///  - PdLoop:          that plant under control::pd_torque, τ = k_p sk(Rᵀ R_g)^∨ − k_d ω (PET-ERG
+///    paper, eq. (3)) to a fixed R_g; A = −(k_p/2) J⁻¹ (tr(E) I − E), E = Rᵀ R_g;
+///    B = J⁻¹((Jω)^ − ω̂ J − k_d I).
 /// docs/reach.md derives A and B; tests/reach/test_closed_loop.cpp checks them against finite
 /// differences.
 
@@ -20,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/control/pd_so3.hpp"
 #include "attiguard/reach/interval.hpp"
 #include "attiguard/reach/polynomial_field.hpp"
 
@@ -63,9 +66,10 @@ class ClosedLoop {
   /// True when X_ω = M ω + b independently of R: the ω-flow is affine (ω-reach sets of convex
   /// sets stay convex).
   [[nodiscard]] virtual bool omega_flow_affine() const = 0;
-  /// X_ω as the exact polynomial it is (polynomial_field.hpp): what the bound on the nominal's
-  /// integration error differentiates.
-  [[nodiscard]] virtual PolynomialField polynomial_field() const = 0;
+  /// X_ω as the exact polynomial it is (polynomial_field.hpp), read off omega_dot: what the
+  /// bound on the nominal's integration error differentiates. Every built-in loop is of that
+  /// form; throws NumericalError for a loop that is not.
+  [[nodiscard]] PolynomialField polynomial_field() const;
 
   /// Mean-value enclosure of X_ω over the set: X_ω(R_c, ω_c) ± (‖row_k |A|‖ ρ + |B| rad(ω)).
   [[nodiscard]] Box3 omega_dot_enclosure(const AttitudeBall& att, const Box3& box) const;
@@ -84,7 +88,6 @@ class LinearOmegaLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
   [[nodiscard]] bool omega_flow_affine() const override { return true; }
-  [[nodiscard]] PolynomialField polynomial_field() const override;
   [[nodiscard]] const Mat3& matrix() const noexcept { return M_; }
 
  private:
@@ -104,10 +107,9 @@ class RigidBodyLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
   [[nodiscard]] bool omega_flow_affine() const override { return false; }
-  [[nodiscard]] PolynomialField polynomial_field() const override;
 
  private:
-  Mat3 J_, Jinv_;
+  dynamics::RigidBody body_;
   Vec3 tau_;
   std::array<Mat3, 3> G_;  ///< B(ω) = Σ_k ω_k G_k
 };
@@ -125,13 +127,13 @@ class PdLoop final : public ClosedLoop {
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] bool lmi_depends_on_attitude() const override { return true; }
   [[nodiscard]] bool omega_flow_affine() const override { return false; }
-  [[nodiscard]] PolynomialField polynomial_field() const override;
   /// Bound on ‖A(R, ·) − A_center‖₂ over the attitude ball (A does not depend on ω).
   [[nodiscard]] double a_deviation_bound(const AttitudeBall& att) const;
 
  private:
-  Mat3 J_, Jinv_, Rg_;
-  double kp_, kd_;
+  dynamics::RigidBody body_;
+  Mat3 Rg_;
+  control::PdGains gains_;
   std::array<Mat3, 3> G_;  ///< gyroscopic part of B: Σ_k ω_k G_k
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "attiguard/reach/lmi_proof.hpp"
 #include "attiguard/reach/metrics.hpp"
 
 namespace attiguard::reach {
@@ -80,6 +81,34 @@ MetricSolution certify(const LmiEnclosure& enc, const Mat3& Q_prev, const Mat3& 
     sol.message = "LMI re-check failed";
     return sol;
   }
+  // The proof in outward-rounded interval arithmetic (lmi_proof.hpp): Q, P ≻ 0, Q ≺ Q_prev,
+  // P ≺ P_prev and the LMI at every vertex. A failed monotonicity proof (Q = Q_prev to rounding)
+  // scales (Q, P, μ) down, a failed LMI proof raises c; both keep what was proved before.
+  bool proved = false;
+  for (int attempt = 0; attempt < 6 && !proved; ++attempt) {
+    const bool metric_ok = prove_less(-Q, Mat3::Zero()).proved && prove_less(-P, Mat3::Zero()).proved &&
+                           prove_less(Q, Q_prev).proved && prove_less(P, P_prev).proved;
+    if (!metric_ok) {
+      const double s = 1.0 - 1e-12 * std::ldexp(1.0, 2 * attempt);
+      Q *= s;
+      P *= s;
+      for (double& m : mu) m *= s;
+      sol.scaled = true;
+      continue;
+    }
+    const NegativeDefiniteProof lmi = prove_contraction_lmi(enc, Q, P, c, mu);
+    if (lmi.proved) {
+      proved = true;
+      break;
+    }
+    const double excess = std::isfinite(lmi.margin) ? std::max(lmi.margin, 0.0) : 0.0;
+    c += (excess + kMargin * std::ldexp(1.0, 2 * attempt)) / (2.0 * std::min(lambda_min(Q), lambda_min(P)));
+  }
+  if (!proved) {
+    sol.message = "LMI or metric bounds not proved in interval arithmetic";
+    return sol;
+  }
+  worst = lmi_worst_eigenvalue(enc, Q, P, c, mu);
   sol.ok = true;
   sol.c = c;
   sol.Q = Q;

@@ -16,6 +16,8 @@
 /// certified a posteriori in double precision: Q ⪯ Q_i and P ⪯ P_i are enforced by scaling
 /// (Q, P) down (the LMI is homogeneous in (Q, P, μ)), and any residual positive eigenvalue e of
 /// the LMI is absorbed by raising c by e/(2 λ_min(diag(Q, P))) (M decreases by 2Δc·diag(Q, P)).
+/// Then Q, P ≻ 0, Q ≺ Q_i, P ≺ P_i and the LMI at every vertex are proved in outward-rounded
+/// interval arithmetic (lmi_proof.hpp); a solution that cannot be proved is not returned as ok.
 
 #include <string>
 #include <vector>

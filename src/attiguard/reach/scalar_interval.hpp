@@ -1,8 +1,10 @@
 #pragma once
 /// @file scalar_interval.hpp
-/// A closed real interval [lo, hi] with the four operations the Taylor-model bound of the
-/// nominal's integration error needs (nominal_error.hpp). Round-to-nearest, like the rest of
-/// ConReach's enclosures (docs/reach.md, "Limits": outward rounding is not used yet).
+/// A closed real interval [lo, hi] with outward-rounded operations: each result computed in
+/// round-to-nearest is widened by one ulp on each side (the rounding error of one IEEE-754
+/// operation is at most half an ulp), so it contains the exact result of the operation on any
+/// reals in the operands (docs/reach.md, "Rigorous LMI check"). Used by the Taylor-model bound of
+/// the nominal's integration error (nominal_error.hpp) and the LMI proof (lmi_proof.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -21,15 +23,23 @@ struct Interval {
   [[nodiscard]] double mag() const { return std::max(std::abs(lo), std::abs(hi)); }
   [[nodiscard]] bool finite() const { return std::isfinite(lo) && std::isfinite(hi); }
 
-  friend Interval operator+(const Interval& a, const Interval& b) { return {a.lo + b.lo, a.hi + b.hi}; }
-  friend Interval operator-(const Interval& a, const Interval& b) { return {a.lo - b.hi, a.hi - b.lo}; }
-  friend Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }
+  /// One ulp below / above (the outward rounding of one operation).
+  [[nodiscard]] static double down(double x) { return std::nextafter(x, -HUGE_VAL); }
+  [[nodiscard]] static double up(double x) { return std::nextafter(x, HUGE_VAL); }
+
+  friend Interval operator+(const Interval& a, const Interval& b) {
+    return {down(a.lo + b.lo), up(a.hi + b.hi)};
+  }
+  friend Interval operator-(const Interval& a, const Interval& b) {
+    return {down(a.lo - b.hi), up(a.hi - b.lo)};
+  }
+  friend Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }  // exact
   friend Interval operator*(const Interval& a, const Interval& b) {
     const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+    return {down(std::min({p[0], p[1], p[2], p[3]})), up(std::max({p[0], p[1], p[2], p[3]}))};
   }
   friend Interval operator/(const Interval& a, double d) {  // d > 0
-    return {a.lo / d, a.hi / d};
+    return {down(a.lo / d), up(a.hi / d)};
   }
   Interval& operator+=(const Interval& b) { return *this = *this + b; }
 };

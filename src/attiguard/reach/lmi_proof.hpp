@@ -1,0 +1,36 @@
+#pragma once
+/// @file lmi_proof.hpp
+/// A proof, valid for the floating-point numbers computed with, that a certified solution of
+/// the contraction SDP satisfies the LMI (10) (contraction-reachability paper, Thm. 4) at every
+/// vertex of an LmiEnclosure, and that the metric stays positive definite and monotone
+/// (Q ≻ 0, P ≻ 0, Q ⪯ Q_prev, P ⪯ P_prev; paper Lemma 5). docs/reach.md, "Rigorous LMI check":
+///  1. every matrix is evaluated in outward-rounded interval arithmetic (scalar_interval.hpp);
+///  2. an interval symmetric matrix S is proved negative definite by a congruence with the
+///     floating-point eigenvectors V of its midpoint: D = VᵀSV (in intervals) has every row
+///     satisfying D_ii + Σ_{j≠i}|D_ij| < 0 (Gershgorin), and VᵀV is strictly diagonally dominant
+///     with a positive diagonal (so V is nonsingular); by Sylvester's law of inertia every
+///     symmetric matrix in S is then negative definite.
+
+#include <vector>
+
+#include "attiguard/reach/closed_loop.hpp"
+
+namespace attiguard::reach {
+
+/// Outcome of a proof: `proved`, and the largest Gershgorin row bound found (< 0 when proved).
+struct NegativeDefiniteProof {
+  bool proved{false};
+  double margin{0.0};
+};
+
+/// Proves λ_max(M(Q, P; A_v, B_v, ω_v, c) + μ_v ρ² I + UUᵀ/μ_v) < 0 at every vertex (the robust
+/// form of contraction_sdp.hpp; μ ignored when ρ = 0), with Q, P, c, μ taken as the exact
+/// values of their floating-point numbers. `margin` is the worst vertex's.
+[[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const Mat3& Q,
+                                                          const Mat3& P, double c,
+                                                          const std::vector<double>& mu);
+
+/// Proves A − B ≺ 0 for symmetric 3×3 A, B (B = 0: A ≺ 0).
+[[nodiscard]] NegativeDefiniteProof prove_less(const Mat3& A, const Mat3& B);
+
+}  // namespace attiguard::reach

@@ -1,4 +1,4 @@
-// Waypoint guidance (issue 4): the whole three-waypoint mission of the paper (Tables I-II) and
+// Waypoint guidance (docs/waypoint.md): the whole three-waypoint mission of the paper (Tables I-II) and
 // one guidance/controller step. Figures: docs/performance.md, "Waypoint guidance".
 #include <benchmark/benchmark.h>
 

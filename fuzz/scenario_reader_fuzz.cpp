@@ -4,7 +4,7 @@
 /// Any attiguard::Error is an expected rejection of bad input; anything else (another
 /// exception, a crash, a sanitizer report) is a bug.
 ///   cmake -S . -B build-fuzz -DATTIGUARD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++
-///   build-fuzz/fuzz/scenario_reader_fuzz -max_total_time=60 fuzz/corpus
+///   build-fuzz/fuzz/scenario_reader_fuzz -max_total_time=60 build-fuzz/corpus
 
 #include <cstddef>
 #include <cstdint>

@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake g++
+  build-essential cmake g++ pkg-config
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libsdp-dev liblapack-dev libblas-dev
   libgtest-dev libbenchmark-dev

@@ -1,4 +1,4 @@
-// End-to-end tests of the `attiguard` program on the rigid_body kind (issue 2 acceptance).
+// End-to-end tests of the `attiguard` program on the rigid_body kind (docs/scenario-format.md, docs/errors.md).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -92,7 +92,7 @@ TEST_P(CliBadInput, CheckExitsTwoWithOneLineNamingLineAndKey) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Issue2Acceptance, CliBadInput,
+    RigidBodyBadInputs, CliBadInput,
     ::testing::Values(BadInput{"typo_key.toml", "control.kpp", ":15:"},
                       BadInput{"non_orthonormal.toml", "control.reference", ":17:"},
                       BadInput{"nan_value.toml", "initial.omega_b", ":11:"}),

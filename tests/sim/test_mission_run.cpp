@@ -1,5 +1,5 @@
 // Scenario kind `mission` (docs/mission.md): waypoint guidance through the PET-ERG. Acceptance of
-// issue 6: the constrained example completes every waypoint with min pointing margin >= 0 and
+// the kind: the constrained example completes every waypoint with min pointing margin >= 0 and
 // ||tau|| <= tau_max at every sample, while its unconstrained twin violates the cone.
 
 #include <gtest/gtest.h>

@@ -87,7 +87,7 @@ TEST(PetErgRun, PaperScenarioMeetsEveryAcceptanceCriterion) {
   EXPECT_EQ(s["samples"].get<long>(), 120);  // t_k = 0, 0.5, …, 59.5
   EXPECT_LT(s["samples_updating"].get<long>(), 120);  // the trigger did hold the reference
   EXPECT_GT(s["samples_updating"].get<long>(), 0);
-  // trajectory.csv: header with every column the issue lists, rows at t = 0, 0.01, …, 60.
+  // trajectory.csv: header with every column the pet_erg kind writes, rows at t = 0, 0.01, …, 60.
   std::ifstream csv(dir / "trajectory.csv");
   std::string header;
   std::getline(csv, header);

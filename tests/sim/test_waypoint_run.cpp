@@ -1,5 +1,5 @@
 // Scenario kind `waypoint`: the paper scenario and the fine-position scenario end to end, outputs,
-// and input errors (issue 4 acceptance).
+// and input errors (docs/waypoint.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

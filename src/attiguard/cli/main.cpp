@@ -86,7 +86,7 @@ int run(int argc, char** argv) {
       ->required()
       ->type_name("FILE");
 
-  attiguard::cli::ReachArguments reach_args;  // ConReach (issue 5): cli/reach_command.cpp
+  attiguard::cli::ReachArguments reach_args;  // ConReach: cli/reach_command.cpp
   CLI::App* reach_cmd = app.add_subcommand(
       "reach", "ConReach reachability and safety verification; write reach.json into DIR");
   reach_cmd->add_option("SCENARIO", reach_args.scenario, "Scenario file (TOML, kind = \"reach\")")
@@ -97,7 +97,7 @@ int run(int argc, char** argv) {
       ->type_name("DIR");
   reach_cmd->add_flag("--plot", reach_args.plot, "Also write PNG plots into DIR");
 
-  attiguard::cli::CampaignArguments campaign_args;  // issue 7: cli/campaign_command.cpp
+  attiguard::cli::CampaignArguments campaign_args;  // Monte Carlo campaigns: cli/campaign_command.cpp
   CLI::App* campaign_cmd = app.add_subcommand(
       "campaign",
       "Monte Carlo campaign over the scenario's [dispersions]; write runs.csv and campaign.json "

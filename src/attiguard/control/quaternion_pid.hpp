@@ -25,7 +25,7 @@ struct QuaternionPidOutput {
 };
 
 /// Sampled PID (27) of the waypoint paper: τ^b = −k_p ε − k_i ∫ε − k_d ε̇ with ε = vec(q_{d,b}),
-/// q_{d,b} = q_{d,i} ⊗ q_{i,b} (eq. (25); erratum: the paper prints q_{d,i} ⊗ q_{i,d} = 1) and
+/// q_{d,b} = q_{d,i} ⊗ q_{i,b} (eq. (25); erratum, docs/errata.md, Waypoint 8: the paper prints q_{d,i} ⊗ q_{i,d} = 1) and
 /// ε̇ = ½ (η I + S(ε)) ω^b_{d,b} from (26). The integral is a forward-Euler sum over the sample
 /// period (gated by integral_zone). Noexcept and allocation-free.
 class QuaternionPid {

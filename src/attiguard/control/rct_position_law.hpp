@@ -14,7 +14,9 @@ struct RctPositionGains {
 
 /// f^b_RCT = m R_i^b (κ_p e^i − κ_d v^i) with e^i = p_wp − p (waypoint paper, eq. (28), sign of
 /// the κ_p term corrected: the printed −κ_p e^i pushes *away* from the waypoint because
-/// ė^i = −v^i; tests/control/test_rct.cpp shows the printed sign diverges). Allocation-free.
+/// ė^i = −v^i: docs/errata.md, Waypoint 7; the RctPositionLaw test of
+/// tests/control/test_waypoint_controllers.cpp shows that the printed sign diverges).
+/// Allocation-free.
 [[nodiscard]] inline lie::Vec3 rct_position_force(double mass, const lie::Mat3& R_ib,
                                                   const lie::Vec3& e_i, const lie::Vec3& v_i,
                                                   const RctPositionGains& g) noexcept {

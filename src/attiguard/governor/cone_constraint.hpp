@@ -25,7 +25,7 @@ inline constexpr int kMaxCones = 16;
 /// One pointing constraint (PET-ERG paper, eq. (2b)): the body axis a_b (unit, body frame) must
 /// stay within the angle θ_c of the inertial direction a_c (unit, inertial frame), i.e.
 /// c(R) := a_cᵀ R a_b ≥ cos θ_c. A keep-out cone of half-angle α around s is a_c = −s,
-/// θ_c = π − α (issue 3, "Beyond the paper").
+/// θ_c = π − α (beyond the paper: docs/pet-erg.md, "Beyond the paper").
 ///
 /// The repulsive part of the navigation field (docs/pet-erg.md, "Repulsive potential") is active
 /// for δ < c < ζ and diverges as c → δ⁺, with cos θ_c < δ < ζ (paper Sec. V:
@@ -61,7 +61,7 @@ struct ConeConstraint {
 }
 
 /// Keep-out cone of half-angle α around the inertial direction s: (2b) of the PET-ERG paper with
-/// a_c = −s and θ_c = π − α (issue 3).
+/// a_c = −s and θ_c = π − α (docs/pet-erg.md, "Beyond the paper").
 [[nodiscard]] inline ConeConstraint keep_out_cone(const Vec3& axis_b, const Vec3& avoid_i,
                                                   double alpha, double delta_offset = 0.05,
                                                   double zeta_offset = 0.05,
@@ -71,7 +71,7 @@ struct ConeConstraint {
 }
 
 /// c(R) = a_cᵀ R a_b, the cosine of the angle between the body axis in inertial coordinates and
-/// a_c (PET-ERG paper, eq. (2b); paper-notes "Pointing threshold").
+/// a_c (PET-ERG paper, eq. (2b); docs/errata.md, PET-ERG 1a).
 [[nodiscard]] inline double cone_cosine(const ConeConstraint& cone, const Mat3& R_ib) noexcept {
   return cone.direction_i.dot(R_ib * cone.axis_b);
 }
@@ -110,7 +110,7 @@ struct ConeConstraint {
 }
 
 /// A fixed-capacity list of cone constraints (no heap; at most kMaxCones). Used by the flight
-/// governor (PET-ERG paper, eq. (2b), several constraints: issue 3).
+/// governor (PET-ERG paper, eq. (2b), several constraints: docs/pet-erg.md, "Beyond the paper").
 class ConeSet {
  public:
   ConeSet() = default;

@@ -2,7 +2,7 @@
 /// @file navigation_field.hpp
 /// The navigation field ρ_n(R_d, R_g) = −grad P(R_g, R_d), P = P_a + Σ P_r (PET-ERG paper,
 /// Sec. III-B.2), as body vectors of T_{R_g}SO(3): a function f has gradient g at R_g when
-/// f(R_g exp(εη̂)) = f(R_g) + ε gᵀη + O(ε²) (paper-notes "Attractive field").
+/// f(R_g exp(εη̂)) = f(R_g) + ε gᵀη + O(ε²) (docs/errata.md, PET-ERG 1c).
 ///
 /// Repulsive potential (our choice, the paper does not state it; docs/pet-erg.md):
 ///   P_r(c) = k_r (ζ − c)² / (c − δ) for δ < c < ζ, 0 for c ≥ ζ, c = a_cᵀR_g a_b.
@@ -22,18 +22,19 @@ namespace attiguard::governor {
 inline constexpr double kRepulsiveFloor = 1e-12;
 
 /// Attractive potential P_a = ½ tr(I − R_dᵀR_g) = φ(R_dᵀR_g) (PET-ERG paper, Sec. III-B.2;
-/// paper-notes "Attractive field").
+/// docs/errata.md, PET-ERG 1c).
 [[nodiscard]] inline double attractive_potential(const Mat3& R_g, const Mat3& R_d) noexcept {
   return lie::phi(R_d.transpose() * R_g);
 }
 
-/// Attractive field ρ_a = −grad P_a = sk(R_gᵀR_d)^∨ (PET-ERG paper, Sec. III-B.2; paper-notes).
+/// Attractive field ρ_a = −grad P_a = sk(R_gᵀR_d)^∨ (PET-ERG paper, Sec. III-B.2;
+/// docs/errata.md, PET-ERG 1c).
 [[nodiscard]] inline Vec3 attractive_field(const Mat3& R_g, const Mat3& R_d) noexcept {
   return lie::vee(lie::sk(R_g.transpose() * R_d));
 }
 
 /// Gradient of c(R_g) = a_cᵀR_g a_b: g_c = a_b × (R_gᵀa_c), ‖g_c‖ = sin β_g (constraint (2b) of
-/// the PET-ERG paper; paper-notes "Constraint gradient").
+/// the PET-ERG paper; docs/errata.md, PET-ERG 1d).
 [[nodiscard]] inline Vec3 constraint_gradient(const ConeConstraint& cone, const Mat3& R_g) noexcept {
   return cone.axis_b.cross(R_g.transpose() * cone.direction_i);
 }
@@ -74,7 +75,7 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return -repulsive_potential_slope(cone, c) * constraint_gradient(cone, R_g);
 }
 
-/// Total potential P = P_a + Σ_i P_r,i (PET-ERG paper Sec. III-B.2; sum over cones: issue 3).
+/// Total potential P = P_a + Σ_i P_r,i (PET-ERG paper Sec. III-B.2; sum over cones: docs/pet-erg.md, "Beyond the paper").
 [[nodiscard]] inline double navigation_potential(std::span<const ConeConstraint> cones,
                                                  const Mat3& R_g, const Mat3& R_d) noexcept {
   double p = attractive_potential(R_g, R_d);

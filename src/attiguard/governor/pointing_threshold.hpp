@@ -19,7 +19,7 @@
 namespace attiguard::governor {
 
 /// Γ_g of one cone: k_p(1 − cos(θ_c − β_g)) with β_g = arccos(a_cᵀR_g a_b) when β_g < θ_c, else 0
-/// (PET-ERG paper, Sec. III-B.1, "Γ_g(R_g) handles C_g"; paper-notes "Pointing threshold").
+/// (PET-ERG paper, Sec. III-B.1, "Γ_g(R_g) handles C_g"; docs/errata.md, PET-ERG 1a).
 /// cos(θ_c − β_g) = cos θ_c · c + sin θ_c · sin β_g with c = cos β_g: no inverse trigonometry.
 [[nodiscard]] inline double pointing_threshold(const ConeConstraint& cone, const Mat3& R_g,
                                                double kp) noexcept {
@@ -32,7 +32,7 @@ namespace attiguard::governor {
   return kp * std::max(0.0, 1.0 - cos_gap);
 }
 
-/// Γ_g for several cones: the minimum over them (issue 3, "any number of cone constraints";
+/// Γ_g for several cones: the minimum over them (beyond the paper, docs/pet-erg.md: "any number of cone constraints";
 /// PET-ERG paper Sec. III-B.1 for one). +∞ when there is no cone.
 [[nodiscard]] inline double pointing_threshold(std::span<const ConeConstraint> cones,
                                                const Mat3& R_g, double kp) noexcept {

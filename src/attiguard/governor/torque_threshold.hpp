@@ -36,7 +36,7 @@ struct TorqueThreshold {
 
 /// Γ_d of the PET-ERG paper (Sec. III-B.1, "solving the associated offline optimization problem
 /// directly on SO(3)×R³"), computed once offline to the absolute accuracy `tol` (default 1e-12,
-/// well inside the 1e-9 the issue requires). The returned gamma_d is a certified lower bound of
+/// well inside the required 1e-9, docs/errata.md, PET-ERG 1b). The returned gamma_d is a certified lower bound of
 /// the true minimum (tangent-line bound of the convex f, minus a few rounding units): it never
 /// overestimates, so {V ≤ Γ_d} never allows torque saturation.
 /// Throws std::invalid_argument when an input is not positive and finite (set-up code only).

@@ -7,7 +7,7 @@
 /// from the inertial x axis onto ê^i; we build it from the x axis of a *chart* frame r fixed per
 /// phase of a leg (R_e^i = R_r^i · shortest_arc(x, R_i^r ê^i)), which is the paper's construction
 /// for R_r^i = I. The chart keeps the rotation angle ϑ ≤ π/2, far from the antiparallel
-/// singularity ϑ = π where k of (11) and the rate blow up (paper-notes, waypoint 3).
+/// singularity ϑ = π where k of (11) and the rate blow up (docs/errata.md, Waypoint 3).
 ///
 /// Errata (docs/waypoint.md): (8) swaps sine and cosine — we use q = [cos(ϑ/2), k sin(ϑ/2)],
 /// written as the unnormalised n = [1 + x·û, x × û] (smooth through ϑ = 0); (9) as printed is

@@ -13,7 +13,7 @@
 ///  - PdLoop:          that plant under control::pd_torque, τ = k_p sk(Rᵀ R_g)^∨ − k_d ω (PET-ERG
 ///    paper, eq. (3)) to a fixed R_g; A = −(k_p/2) J⁻¹ (tr(E) I − E), E = Rᵀ R_g;
 ///    B = J⁻¹((Jω)^ − ω̂ J − k_d I).
-/// docs/reach.md derives A and B; tests/reach/test_closed_loop.cpp checks them against finite
+/// docs/reach.md derives A and B; tests/reach/test_reach_closed_loop.cpp checks them against finite
 /// differences.
 
 #include <array>
@@ -40,7 +40,7 @@ struct LmiVertex {
 ///   (A(R, ω), B(R, ω), ω) = Σ_v θ_v (A_v, B_v, ω_v) + (ΔA, ΔB, 0).
 /// Since (10) is affine in (A, B, ω̂) for fixed (Q, P, c), imposing it at every vertex robustly
 /// against ‖Δ‖ ≤ rho imposes it on U. rho = 0 and `exact` when the LMI is affine in ω alone
-/// (vertex enumeration, paper-notes item 2).
+/// (vertex enumeration, docs/errata.md, ConReach 2).
 struct LmiEnclosure {
   std::vector<LmiVertex> vertices;
   double rho{0.0};

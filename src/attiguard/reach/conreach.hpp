@@ -29,7 +29,7 @@ struct InitialSet {
 
 /// How the contraction rate of each step is chosen.
 enum class RateMode {
-  line_search,    ///< Algorithm 1 as the authors run it (paper-notes item 1)
+  line_search,    ///< Algorithm 1 as the authors run it (docs/errata.md, ConReach 1)
   min_enclosure,  ///< the (c, Q, P) giving the smallest bi-invariant enclosure radius
 };
 

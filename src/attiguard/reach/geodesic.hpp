@@ -24,7 +24,7 @@ namespace attiguard::reach {
 [[nodiscard]] Vec3 chart_coordinates(int chart, const Mat3& R);
 /// Ψ_i⁻¹(r) = Λ(s_i) exp(r̂).
 [[nodiscard]] Mat3 chart_inverse(int chart, const Vec3& r);
-/// The chart in which R has the smallest ‖Ψ_i(R)‖ (paper-notes item 5).
+/// The chart in which R has the smallest ‖Ψ_i(R)‖ (docs/errata.md, ConReach 5).
 [[nodiscard]] int best_chart(const Mat3& R);
 /// f(r) of (26) in the paper's closed form (series for small ‖r‖); requires ‖r‖ < 2π.
 [[nodiscard]] Mat3 exp_atlas_f(const Vec3& r);

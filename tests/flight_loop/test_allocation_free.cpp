@@ -1,0 +1,243 @@
+// The flight-loop promise (docs/pet-erg.md, Sec. 5; docs/waypoint.md, "Guidance"; docs/install.md,
+// "Flight-only build"): per step, nothing allocated and nothing thrown. Enforced: 10⁴ calls each
+// of AttitudeGovernor::step, Mission::step and QuaternionPid::step in closed loop, with every
+// global operator new / delete of this executable replaced by counting versions, must not reach
+// the heap; and the three steps are declared noexcept (static_assert).
+//
+// Own executable (tests/CMakeLists.txt, attiguard_allocation_tests): the replaced operators
+// would otherwise count for the whole suite. Only the step calls are counted (a flag is raised
+// around each call), so GoogleTest and the plant propagation in between may allocate. The
+// flight layers use fixed-size Eigen types only, which never call malloc, so counting operator
+// new covers every standard container, std::function, std::string and exception object.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <numbers>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "attiguard/control/quaternion_pid.hpp"
+#include "attiguard/dynamics/spacecraft_plant.hpp"
+#include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/guidance/mission.hpp"
+#include "attiguard/lie/axis_angle.hpp"
+#include "attiguard/lie/quaternion.hpp"
+#include "attiguard/lie/so3.hpp"
+
+namespace {
+
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+
+void* counted_alloc(std::size_t size, std::size_t align) {
+  if (g_counting.load(std::memory_order_relaxed)) {
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+  }
+  const std::size_t n = size == 0 ? 1 : size;
+  void* p = align > alignof(std::max_align_t)
+                ? std::aligned_alloc(align, (n + align - 1) / align * align)
+                : std::malloc(n);
+  return p;
+}
+
+void* counted_alloc_or_throw(std::size_t size, std::size_t align) {
+  void* p = counted_alloc(size, align);
+  if (p == nullptr) {
+    throw std::bad_alloc();
+  }
+  return p;
+}
+
+}  // namespace
+
+// ---- every replaceable global allocation function (C++17 [new.delete]) ----
+void* operator new(std::size_t n) { return counted_alloc_or_throw(n, 0); }
+void* operator new[](std::size_t n) { return counted_alloc_or_throw(n, 0); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  return counted_alloc_or_throw(n, static_cast<std::size_t>(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a) {
+  return counted_alloc_or_throw(n, static_cast<std::size_t>(a));
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted_alloc(n, 0); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted_alloc(n, 0); }
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_alloc(n, static_cast<std::size_t>(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_alloc(n, static_cast<std::size_t>(a));
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+
+namespace attiguard {
+namespace {
+
+using lie::Mat3;
+using lie::Quat;
+using lie::Vec3;
+
+// The three flight-loop steps promise not to throw.
+static_assert(noexcept(std::declval<governor::AttitudeGovernor&>().step(
+    0.0, std::declval<const Mat3&>(), std::declval<const Vec3&>(), std::declval<const Mat3&>())));
+static_assert(noexcept(std::declval<guidance::Mission&>().step(
+    std::declval<const guidance::MissionInputs&>())));
+static_assert(noexcept(std::declval<control::QuaternionPid&>().step(
+    std::declval<const Quat&>(), std::declval<const Vec3&>(), std::declval<const Quat&>(),
+    std::declval<const Vec3&>(), 0.0)));
+
+constexpr int kCalls = 10000;
+
+/// Calls f() with allocation counting on; returns its result.
+template <class F>
+auto counted(F&& f) {
+  g_counting.store(true, std::memory_order_relaxed);
+  auto result = f();
+  g_counting.store(false, std::memory_order_relaxed);
+  return result;
+}
+
+/// R ← R exp(h ω̂), ω ← ω + h J⁻¹((Jω) × ω + τ) over `substeps` Lie-Euler sub-steps of dt.
+void propagate_attitude(const dynamics::RigidBody& body, const Vec3& tau_b, double dt,
+                        Mat3& R_ib, Vec3& omega_b) {
+  constexpr int substeps = 10;
+  const double h = dt / substeps;
+  for (int s = 0; s < substeps; ++s) {
+    omega_b += h * body.angular_acceleration(omega_b, tau_b);
+    R_ib = R_ib * lie::exp(h * omega_b);
+  }
+}
+
+TEST(AllocationFree, CountingSeesAnAllocationInsideTheWindow) {
+  // The counter itself works: a std::vector built inside the window is seen.
+  g_allocations = 0;
+  const std::size_t n = counted([] { return std::vector<double>(8, 1.0).size(); });
+  EXPECT_EQ(n, 8U);
+  EXPECT_GE(g_allocations.load(), 1);
+}
+
+TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
+  // PET-ERG paper, Sec. V (examples/pet_erg_paper.toml), in mode pet and in mode continuous.
+  for (const governor::GovernorMode mode :
+       {governor::GovernorMode::pet, governor::GovernorMode::continuous}) {
+    governor::GovernorParams params;
+    params.mode = mode;
+    params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
+    params.tau_max = 2.5;
+    const std::array cones{governor::keep_in_cone(Vec3::UnitZ(), Vec3(-0.791, 0.061, -0.609),
+                                                  160.0 * std::numbers::pi / 180.0)};
+    governor::AttitudeGovernor gov(params, cones);
+    const dynamics::RigidBody body(params.J);
+    const Mat3 R_d = lie::rotation_from_axis_angle({Vec3::UnitY(), std::numbers::pi / 2.0});
+    Mat3 R_ib = Mat3::Identity();
+    Vec3 omega_b(0.2, 0.3, 0.4);
+    const double dt = 0.005;
+    g_allocations = 0;
+    int samples = 0;
+    for (int k = 0; k < kCalls; ++k) {
+      const governor::GovernorOutput out =
+          counted([&] { return gov.step(k * dt, R_ib, omega_b, R_d); });
+      samples += out.sampled ? 1 : 0;
+      propagate_attitude(body, out.tau_b, dt, R_ib, omega_b);
+    }
+    EXPECT_EQ(g_allocations.load(), 0)
+        << "heap allocations in " << kCalls << " calls of AttitudeGovernor::step (mode "
+        << (mode == governor::GovernorMode::pet ? "pet" : "continuous") << ")";
+    EXPECT_LT(lie::distance(R_ib, R_d), 1e-2);  // the loop really flew the manoeuvre
+    if (mode == governor::GovernorMode::pet) {
+      EXPECT_GE(samples, 90);  // 50 s at T_s = 0.5 s: the trigger (5) was evaluated
+    }
+  }
+}
+
+TEST(AllocationFree, QuaternionPidStepTrackingATurn) {
+  const control::QuaternionPidGains gains{20.0, 2.0, 20.0, 0.05};
+  control::QuaternionPid pid(gains);
+  const dynamics::RigidBody body(Vec3(100.0, 120.0, 80.0).asDiagonal());
+  Mat3 R_ib = Mat3::Identity();
+  Vec3 omega_b = Vec3::Zero();
+  const double dt = 0.01;
+  g_allocations = 0;
+  for (int k = 0; k < kCalls; ++k) {
+    // A desired attitude turning slowly about a tilted axis, with its feed-forward rate.
+    const Vec3 omega_d_d = 0.02 * Vec3(1.0, 1.0, 0.5).normalized();
+    const Quat q_id = lie::quat_from_rotation_vector((k * dt) * omega_d_d);
+    const Quat q_ib = lie::rotation_to_quat(R_ib);
+    const control::QuaternionPidOutput out =
+        counted([&] { return pid.step(q_ib, omega_b, q_id, omega_d_d, dt); });
+    propagate_attitude(body, out.tau_b, dt, R_ib, omega_b);
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
+                                     << " calls of QuaternionPid::step";
+}
+
+TEST(AllocationFree, MissionStepOverTwoWaypoints) {
+  // Table I of the waypoint paper with the improved choices of examples/waypoint_fine.toml.
+  guidance::MissionParams p;
+  p.mass = 100.0;
+  p.T_max = 20.0;
+  p.f_max = 0.5;
+  p.pointing_tolerance = 1e-5;
+  p.pointing_thrust_axis = true;
+  p.arrival_radius = 0.005;
+  p.position_accuracy = 0.2;
+  p.speed_accuracy = 0.005;
+  p.braking_margin = 0.95;
+  p.flip_timing = guidance::FlipTiming::braking_point;
+  p.flip_lead_time = 60.0;
+  p.rct = {0.02, 0.5};
+  p.brake_speed = guidance::default_brake_speed(p);
+  const control::QuaternionPidGains gains{20.0, 2.0, 20.0, 0.05};
+  const std::array waypoints_i{Vec3(200.0, 0.0, 0.0), Vec3(200.0, 200.0, 0.0)};
+  guidance::Mission mission(p, gains, waypoints_i);
+  const dynamics::SpacecraftPlant plant(p.mass, 20.0 * Mat3::Identity());
+
+  guidance::MissionInputs in;
+  in.dt = 0.1;
+  std::set<guidance::Mode> modes;
+  g_allocations = 0;
+  for (int k = 0; k < kCalls; ++k) {
+    const guidance::MissionCommand cmd = counted([&] { return mission.step(in); });
+    modes.insert(cmd.mode);
+    // Plant (2)-(5) of the waypoint paper, Lie-Euler, the commands held over dt.
+    constexpr int substeps = 10;
+    const double h = in.dt / substeps;
+    for (int s = 0; s < substeps; ++s) {
+      const Vec3 a_i = plant.acceleration_i(in.R_ib, cmd.inputs);
+      in.omega_b += h * plant.body().angular_acceleration(in.omega_b,
+                                                          plant.applied_torque(cmd.inputs.tau_b));
+      in.R_ib = in.R_ib * lie::exp(h * in.omega_b);
+      in.p_i += h * in.v_i;
+      in.v_i += h * a_i;
+    }
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
+                                     << " calls of Mission::step";
+  std::string visited;
+  for (const guidance::Mode m : modes) {
+    visited += std::string(" ") + guidance::mode_name(m);
+  }
+  // The loop went through the guided modes and finished both waypoints.
+  EXPECT_GE(modes.size(), 7U) << "modes visited:" << visited;
+  EXPECT_TRUE(modes.count(guidance::Mode::fine) == 1 && mission.done()) << "modes visited:" << visited;
+  std::printf("Mission modes visited:%s\n", visited.c_str());
+}
+
+}  // namespace
+}  // namespace attiguard

@@ -9,11 +9,5 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 "$@"
 cmake --build build --parallel "$(nproc)"
 
-# `import attiguard` (docs/python.md): the package is built into build/python/attiguard; a .pth
-# file in the user site-packages of Debian's /usr/bin/python3 puts build/python on its sys.path.
-if [[ -f build/python/attiguard/__init__.py ]]; then
-  user_site="$(/usr/bin/python3 -m site --user-site)"
-  mkdir -p "$user_site"
-  echo "$(pwd)/build/python" >"$user_site/attiguard-build.pth"
-  echo "build.sh: /usr/bin/python3 imports attiguard from build/python ($user_site/attiguard-build.pth)"
-fi
+# The Python package is built into build/python/attiguard: PYTHONPATH=build/python imports it
+# (docs/python.md, "Installing"; `pip install .` installs it into a venv).

@@ -6,7 +6,11 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 # Debian's interpreter, never a pyenv shim: it is the one that sees python3-matplotlib/numpy
 # (docs/conventions.md, "Python").
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 "$@"
+# ccache, when installed, also serves the wheel build of `pip install .` (setup.py).
+launcher=()
+if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+  "${launcher[@]}" "$@"
 cmake --build build --parallel "$(nproc)"
 
 # The Python package is built into build/python/attiguard: PYTHONPATH=build/python imports it

@@ -58,6 +58,10 @@ class CMakeBuild(build_ext):
             return
         build_dir = Path(os.environ.get("ATTIGUARD_PIP_BUILD_DIR", ROOT / "build-pip")).resolve()
         self._configure(build_dir)
+        if not (build_dir / "python" / "attiguard").is_dir():
+            raise RuntimeError(
+                "setup.py: CMake did not configure the Python package (see its message above: "
+                "pybind11-dev or python3-dev missing, or ATTIGUARD_BUILD_PYTHON/SANITIZE set)")
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
         self._run(["cmake", "--build", str(build_dir), "--target", ext.target,
                    "--parallel", jobs])

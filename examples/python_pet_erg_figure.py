@@ -3,8 +3,9 @@
 and Γ, with the hold intervals of the trigger (5) shaded) from Python, with the `attiguard`
 package (docs/python.md), and prints the figures of merit of the run.
 
-Usage (from the repository root, after `bash scripts/build.sh`):
-    /usr/bin/python3 examples/python_pet_erg_figure.py [OUT_DIR]     # default out/python
+Usage (from the repository root, after `bash scripts/build.sh`; or with a venv's python after
+`pip install .`, docs/python.md "Installing"):
+    PYTHONPATH=build/python /usr/bin/python3 examples/python_pet_erg_figure.py [OUT_DIR]  # default out/python
 Writes OUT_DIR/pet_erg_fig4_lyapunov.png.
 """
 

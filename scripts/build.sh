@@ -6,14 +6,12 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 # Debian's interpreter, never a pyenv shim: it is the one that sees python3-matplotlib/numpy
 # (docs/conventions.md, "Python").
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 "$@"
+# ccache, when installed, also serves the wheel build of `pip install .` (setup.py).
+launcher=()
+if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+  "${launcher[@]}" "$@"
 cmake --build build --parallel "$(nproc)"
 
-# `import attiguard` (docs/python.md): the package is built into build/python/attiguard; a .pth
-# file in the user site-packages of Debian's /usr/bin/python3 puts build/python on its sys.path.
-if [[ -f build/python/attiguard/__init__.py ]]; then
-  user_site="$(/usr/bin/python3 -m site --user-site)"
-  mkdir -p "$user_site"
-  echo "$(pwd)/build/python" >"$user_site/attiguard-build.pth"
-  echo "build.sh: /usr/bin/python3 imports attiguard from build/python ($user_site/attiguard-build.pth)"
-fi
+# The Python package is built into build/python/attiguard: PYTHONPATH=build/python imports it
+# (docs/python.md, "Installing"; `pip install .` installs it into a venv).

@@ -36,7 +36,7 @@ fi
   "waypoint_paper|Waypoint paper, Sec. VI: single-main-engine waypoint tracking|attiguard run examples/waypoint_paper.toml --out out/waypoint_paper --plot|docs/waypoint.md" \
   "conreach_paper|ConReach paper, Sec. 6: reachable sets on SO(3)xR3|attiguard reach examples/conreach_paper.toml --out out/conreach_paper --plot|docs/reach.md" \
   "conreach_hold_certificate|Hold-interval certificate of the PET-ERG (ConReach, verdict safe)|attiguard reach examples/conreach_hold_certificate.toml --out out/conreach_hold_certificate --plot|docs/mission.md" \
-  "python|PET-ERG paper Fig. 4 from Python|/usr/bin/python3 examples/python_pet_erg_figure.py out/python|docs/python.md" \
+  "python|PET-ERG paper Fig. 4 from Python|PYTHONPATH=build/python /usr/bin/python3 examples/python_pet_erg_figure.py out/python|docs/python.md" \
   "rigid_body_pd|Rigid body under the PD law (first example)|attiguard run examples/rigid_body_pd.toml --out out/rigid_body_pd --plot|docs/scenario-format.md"
 
 echo

@@ -10,6 +10,7 @@ packages=(
   libsdp-dev liblapack-dev libblas-dev
   libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-pytest pybind11-dev python3-dev
+  python3-venv python3-setuptools python3-wheel python3-mypy
   openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
 )
 

@@ -9,5 +9,5 @@ bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j2
 
 # The Python package's tests (python/tests), with Debian's interpreter; conftest.py puts
-# build/python (the bindings) and python/ (the plotting package) on sys.path.
+# build/python (the package attiguard with its extension and attiguard.plot) first on sys.path.
 ATTIGUARD_BUILD_DIR="$(pwd)/build" /usr/bin/python3 -m pytest -q python/tests

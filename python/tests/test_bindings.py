@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import subprocess
+import sys
 import tomllib
 from pathlib import Path
 
@@ -12,6 +14,7 @@ import numpy as np
 import pytest
 
 import attiguard as ag
+from conftest import INSTALLED
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
@@ -169,17 +172,39 @@ def test_reach_returns_the_balls():
 
 
 def test_missing_extension_module_gives_a_clear_import_error(tmp_path):
-    # The pure-Python files without the compiled _core (an unfinished build): a message that
-    # says what is missing and how to build it, not a bare "circular import".
+    # The pure-Python files without the compiled _core (the source tree, an unfinished build):
+    # `import attiguard` works (attiguard.plot needs nothing more), and the first name that needs
+    # _core raises an ImportError that says what is missing and how to build it.
     import shutil
-    package = Path(ag.__file__).parent
     copy = tmp_path / "attiguard"
-    copy.mkdir()
-    for f in package.glob("*.py"):
-        shutil.copy(f, copy / f.name)
+    shutil.copytree(Path(ag.__file__).parent, copy,
+                    ignore=shutil.ignore_patterns("_core*.so", "__pycache__"))
     env = dict(os.environ, PYTHONPATH=str(tmp_path), PYTHONNOUSERSITE="1")
-    r = subprocess.run(["/usr/bin/python3", "-c", "import attiguard"], env=env, cwd=tmp_path,
+    code = ("import attiguard\n"
+            "try:\n"
+            "    attiguard.expm([0.0, 0.0, 1.0])\n"
+            "except ImportError as e:\n"
+            "    print(e)\n")
+    r = subprocess.run([sys.executable, "-c", code], env=env, cwd=tmp_path,
                        capture_output=True, text=True)
-    assert r.returncode != 0
-    assert "attiguard._core is missing" in r.stderr
-    assert "scripts/build.sh" in r.stderr
+    assert r.returncode == 0, r.stderr
+    assert "attiguard._core is missing" in r.stdout
+    assert "pip install ." in r.stdout and "scripts/build.sh" in r.stdout
+
+
+def test_version_is_the_cmake_project_version():
+    cmake = (REPO / "CMakeLists.txt").read_text()
+    match = re.search(r"project\(\s*attiguard\s+VERSION\s+([0-9.]+)", cmake)
+    assert match is not None
+    assert ag.__version__ == match.group(1)
+    if INSTALLED:  # pip's metadata (setup.py reads the same project(VERSION))
+        from importlib.metadata import version
+        assert version("attiguard") == ag.__version__
+
+
+def test_public_names_resolve_and_are_listed():
+    for name in ag.__all__:
+        assert getattr(ag, name) is not None, name
+    assert set(ag.__all__) <= set(dir(ag))
+    with pytest.raises(AttributeError):
+        ag.no_such_name  # noqa: B018

@@ -1,4 +1,4 @@
-"""attiguard_plot campaign: histograms and margin-vs-parameter scatter from runs.csv."""
+"""attiguard.plot campaign: histograms and margin-vs-parameter scatter from runs.csv."""
 
 import json
 
@@ -6,7 +6,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from attiguard_plot.__main__ import main  # noqa: E402
+from attiguard.plot.__main__ import main  # noqa: E402
 
 HEADER = "run,seed,attempts,status,reason,control.kp,violation,min_pointing_margin,max_torque_norm"
 ROWS = [

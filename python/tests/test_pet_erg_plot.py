@@ -7,8 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from attiguard_plot import EXIT_OK, EXIT_USAGE
-from attiguard_plot.__main__ import main
+from attiguard.plot import EXIT_OK, EXIT_USAGE
+from attiguard.plot.__main__ import main
 
 PET_ERG_PNGS = ["pet_erg_sphere.png", "pet_erg_errors.png", "pet_erg_lyapunov.png",
                 "pet_erg_torque.png", "pet_erg_margins.png"]

@@ -37,11 +37,11 @@ struct PlotOutcome {
   std::optional<std::string> skipped_because;
 };
 
-/// Runs `PYTHON -m attiguard_plot KIND DIR` (no shell) with PYTHONPATH pointing at the
-/// plotting package (python/attiguard_plot). PYTHON is the interpreter chosen at configure time
-/// (ATTIGUARD_PYTHON, normally /usr/bin/python3), overridden by the environment variable
-/// ATTIGUARD_PYTHON; the package directory is ATTIGUARD_SOURCE_PYTHON_DIR, overridden by
-/// ATTIGUARD_PYTHON_DIR. Throws std::runtime_error when the module fails for another reason
+/// Runs `PYTHON -m attiguard.plot KIND DIR` (no shell) with PYTHONPATH led by the directory
+/// holding the package attiguard (python/package, docs/conventions.md). PYTHON is the
+/// interpreter chosen at configure time (ATTIGUARD_PYTHON, normally /usr/bin/python3),
+/// overridden by the environment variable ATTIGUARD_PYTHON; the package directory is
+/// ATTIGUARD_SOURCE_PYTHON_DIR/package, overridden by ATTIGUARD_PYTHON_DIR. Throws std::runtime_error when the module fails for another reason
 /// than a missing interpreter or package.
 [[nodiscard]] PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& dir);
 

@@ -1,7 +1,9 @@
 /// @file plot_command.cpp
-/// `--plot`: runs the Python plotting package python/attiguard_plot on a finished run.
+/// `--plot`: runs the Python plotting subpackage attiguard.plot (python/package/attiguard/plot)
+/// on a finished run. It needs neither the compiled extension attiguard._core nor an installed
+/// package: PYTHONPATH leads with python/package of the source tree (docs/conventions.md).
 ///
-/// Exit statuses of `python3 -m attiguard_plot` (python/attiguard_plot/__init__.py):
+/// Exit statuses of `python3 -m attiguard.plot` (python/package/attiguard/plot/__init__.py):
 ///   0 plots written (their paths on stdout, one per line);
 ///   2 usage error, unknown scenario kind or unreadable result files (one line on stderr);
 ///   69 numpy or matplotlib is not installed for that interpreter (one line on stderr saying
@@ -24,7 +26,7 @@ extern char** environ;  // NOLINT: POSIX
 namespace attiguard::cli {
 namespace {
 
-/// Exit status of attiguard_plot when numpy or matplotlib is missing (EX_UNAVAILABLE).
+/// Exit status of attiguard.plot when numpy or matplotlib is missing (EX_UNAVAILABLE).
 constexpr int kPlotDependencyMissing = 69;
 
 constexpr std::string_view kInstallHint = "apt-get install python3-matplotlib python3-numpy";
@@ -73,22 +75,29 @@ std::vector<std::string> child_environment(const std::string& python_dir) {
   return env;
 }
 
+/// The plotting module and the directory holding its top-level package `attiguard`: the
+/// source tree's python/package (ATTIGUARD_SOURCE_PYTHON_DIR is python/).
+constexpr const char* kPlotModule = "attiguard.plot";
+constexpr const char* kDefaultPackageDir = ATTIGUARD_SOURCE_PYTHON_DIR "/package";
+
 }  // namespace
 
 PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& dir) {
   const std::string python = env_or("ATTIGUARD_PYTHON", ATTIGUARD_PYTHON);
-  const std::string python_dir = env_or("ATTIGUARD_PYTHON_DIR", ATTIGUARD_SOURCE_PYTHON_DIR);
+  const std::string python_dir = env_or("ATTIGUARD_PYTHON_DIR", kDefaultPackageDir);
   PlotOutcome outcome;
 
   std::error_code ec;
   if (!std::filesystem::is_regular_file(
-          std::filesystem::path(python_dir) / "attiguard_plot" / "__main__.py", ec)) {
-    outcome.skipped_because = "the plotting package attiguard_plot is not in " + python_dir +
-                              " (set ATTIGUARD_PYTHON_DIR to the python/ directory of attiguard)";
+          std::filesystem::path(python_dir) / "attiguard" / "plot" / "__main__.py", ec)) {
+    outcome.skipped_because = std::string("the plotting package ") + kPlotModule +
+                              " is not in " + python_dir +
+                              " (set ATTIGUARD_PYTHON_DIR to the python/package directory of "
+                              "attiguard, or to a site-packages holding attiguard)";
     return outcome;
   }
 
-  const ProcessResult r = run_process({python, "-m", "attiguard_plot", kind, dir.string()},
+  const ProcessResult r = run_process({python, "-m", kPlotModule, kind, dir.string()},
                                       child_environment(python_dir));
   if (r.spawn_error != 0) {
     outcome.skipped_because = "cannot start the Python interpreter " + python + " (" +
@@ -97,7 +106,7 @@ PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& d
     return outcome;
   }
   if (r.exited && r.exit_status == kPlotDependencyMissing) {
-    std::string why = without_prefix(last_line(r.err), "attiguard_plot: ");
+    std::string why = without_prefix(last_line(r.err), std::string(kPlotModule) + ": ");
     if (why.empty()) {
       why = "numpy or matplotlib is not installed for " + python + " (" +
             std::string(kInstallHint) + ")";
@@ -109,7 +118,7 @@ PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& d
     const std::string how = r.exited ? "exited with status " + std::to_string(r.exit_status)
                                      : "was killed by signal " + std::to_string(r.signal);
     std::string detail = last_line(r.err);
-    throw std::runtime_error("plotting failed: " + python + " -m attiguard_plot " + how +
+    throw std::runtime_error("plotting failed: " + python + " -m " + kPlotModule + " " + how +
                              (detail.empty() ? std::string() : ": " + detail) +
                              " (the results in " + dir.string() + " were written)");
   }

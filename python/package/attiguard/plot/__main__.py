@@ -1,4 +1,4 @@
-"""Command line: ``python3 -m attiguard_plot KIND DIR`` (exit statuses: see __init__.py)."""
+"""Command line: ``python3 -m attiguard.plot KIND DIR`` (exit statuses: see __init__.py)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ _DEBIAN_PACKAGES = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib"
 
 
 def _error(message: str) -> None:
-    print(f"attiguard_plot: {message}", file=sys.stderr)
+    print(f"attiguard.plot: {message}", file=sys.stderr)
 
 
 def _missing_dependencies() -> list[str]:
@@ -40,7 +40,7 @@ def _missing_message(missing: list[str]) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python3 -m attiguard_plot",
+        prog="python3 -m attiguard.plot",
         description="Write PNG plots of an `attiguard run` output directory.",
     )
     parser.add_argument("kind", help="scenario kind, e.g. rigid_body")

@@ -1,20 +1,21 @@
-"""Tests of the plotting package on synthetic `attiguard run` outputs."""
+"""Tests of the plotting subpackage attiguard.plot on synthetic `attiguard run` outputs."""
 
 from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import package_parent
 
-from attiguard_plot import EXIT_DEPENDENCY_MISSING, EXIT_OK, EXIT_USAGE
-from attiguard_plot.__main__ import main
+from attiguard.plot import EXIT_DEPENDENCY_MISSING, EXIT_OK, EXIT_USAGE
+from attiguard.plot.__main__ import main
 
-PYTHON_DIR = Path(__file__).resolve().parent.parent
 
 RIGID_BODY_COLUMNS = [
     "t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z",
@@ -87,13 +88,13 @@ def test_missing_column_exits_2(tmp_path, capsys):
 
 def _module_env() -> dict[str, str]:
     env = dict(os.environ)
-    env["PYTHONPATH"] = str(PYTHON_DIR)
+    env["PYTHONPATH"] = str(package_parent())
     return env
 
 
 def test_module_entry_point(tmp_path):
     run = write_rigid_body_run(tmp_path / "run")
-    r = subprocess.run([sys.executable, "-m", "attiguard_plot", "rigid_body", str(run)],
+    r = subprocess.run([sys.executable, "-m", "attiguard.plot", "rigid_body", str(run)],
                        capture_output=True, text=True, env=_module_env(), check=False)
     assert r.returncode == EXIT_OK, r.stderr
     assert sorted(Path(p).name for p in r.stdout.split()) == sorted(RIGID_BODY_PNGS)
@@ -104,8 +105,8 @@ def test_missing_dependency_exits_69_with_one_line(tmp_path, blocked):
     run = write_rigid_body_run(tmp_path / "run")
     # sys.modules[name] = None makes `import name` raise ImportError, as if not installed.
     code = (f"import sys, runpy; sys.modules[{blocked!r}] = None; "
-            f"sys.argv = ['attiguard_plot', 'rigid_body', {str(run)!r}]; "
-            "runpy.run_module('attiguard_plot', run_name='__main__', alter_sys=True)")
+            f"sys.argv = ['attiguard.plot', 'rigid_body', {str(run)!r}]; "
+            "runpy.run_module('attiguard.plot', run_name='__main__', alter_sys=True)")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        env=_module_env(), check=False)
     assert r.returncode == EXIT_DEPENDENCY_MISSING, r.stderr
@@ -114,3 +115,18 @@ def test_missing_dependency_exits_69_with_one_line(tmp_path, blocked):
     assert blocked in r.stderr and "not installed" in r.stderr
     assert f"python3-{blocked}" in r.stderr
     assert not (run / "attitude_error.png").exists()
+
+
+def test_plots_need_no_compiled_extension(tmp_path):
+    # `attiguard run --plot` runs the plots from the source tree's python/package, which has no
+    # _core: the package's files without the extension module must plot all the same.
+    copy = tmp_path / "pkg" / "attiguard"
+    shutil.copytree(package_parent() / "attiguard", copy,
+                    ignore=shutil.ignore_patterns("_core*.so", "__pycache__"))
+    assert not list(copy.glob("_core*.so"))
+    run = write_rigid_body_run(tmp_path / "run")
+    env = dict(os.environ, PYTHONPATH=str(copy.parent), PYTHONNOUSERSITE="1")
+    r = subprocess.run([sys.executable, "-m", "attiguard.plot", "rigid_body", str(run)],
+                       capture_output=True, text=True, env=env, cwd=tmp_path, check=False)
+    assert r.returncode == EXIT_OK, r.stderr
+    assert sorted(Path(p).name for p in r.stdout.split()) == sorted(RIGID_BODY_PNGS)

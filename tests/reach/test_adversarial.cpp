@@ -1,0 +1,45 @@
+// The adversarial soundness / tightness check (reach/adversarial.hpp).
+
+#include <gtest/gtest.h>
+
+#include "attiguard/reach/adversarial.hpp"
+#include "attiguard/reach/metrics.hpp"
+
+namespace ar = attiguard::reach;
+
+namespace {
+struct Paper {
+  ar::LinearOmegaLoop loop{ar::Vec3(-2, -1, -3).asDiagonal()};
+  ar::InitialSet initial{ar::Mat3::Identity(), 0.1, ar::Vec3(0.65, 0.54, 0.61), 0.1};
+  ar::ReachResult result;
+  Paper() {
+    ar::ConReachSettings s;
+    s.horizon = 1.0;
+    s.steps = 10;
+    result = ar::run_conreach(loop, initial, s);
+  }
+};
+}  // namespace
+
+TEST(ReachAdversarial, PaperExampleHasNoEscapeAndItsEnclosureIsNoTighterThanTheTruth) {
+  const Paper p;
+  ar::AdversarialSettings s;
+  s.threads = 1;
+  const ar::AdversarialReport rep = ar::adversarial_check(p.loop, {p.initial}, {p.result}, s);
+  EXPECT_LE(rep.worst_ratio, 1.0 + 1e-12);
+  EXPECT_GT(rep.worst_ratio, 0.9);  // the balls are tight for this affine flow
+  EXPECT_GE(rep.attitude_claimed, rep.attitude_spread);
+  EXPECT_GT(rep.attitude_spread, 0.5 * rep.attitude_claimed);
+  for (int k = 0; k < 3; ++k) EXPECT_GE(rep.omega_claimed(k), rep.omega_spread(k));
+  EXPECT_EQ(rep.evaluations, 5L * s.starts * (s.iterations + 1));
+}
+
+TEST(ReachAdversarial, FindsTheEscapeFromBallsShrunkBy20Percent) {
+  Paper p;
+  for (ar::ReachStep& st : p.result.steps) st.r *= 0.8;
+  ar::AdversarialSettings s;
+  s.threads = 1;
+  const ar::AdversarialReport rep = ar::adversarial_check(p.loop, {p.initial}, {p.result}, s);
+  EXPECT_GT(rep.worst_ratio, 1.1);
+  EXPECT_GT(rep.worst_ratio_time, 0.0);
+}

@@ -4,20 +4,13 @@
 
 #include "attiguard/reach/adversarial.hpp"
 #include "attiguard/reach/metrics.hpp"
+#include "reach/paper_example.hpp"
 
 namespace ar = attiguard::reach;
 
 namespace {
-struct Paper {
-  ar::LinearOmegaLoop loop{ar::Vec3(-2, -1, -3).asDiagonal()};
-  ar::InitialSet initial{ar::Mat3::Identity(), 0.1, ar::Vec3(0.65, 0.54, 0.61), 0.1};
-  ar::ReachResult result;
-  Paper() {
-    ar::ConReachSettings s;
-    s.horizon = 1.0;
-    s.steps = 10;
-    result = ar::run_conreach(loop, initial, s);
-  }
+struct Paper : attiguard::test::PaperReach {
+  Paper() : PaperReach(1.0, 10) {}
 };
 }  // namespace
 

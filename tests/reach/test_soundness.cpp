@@ -5,20 +5,14 @@
 
 #include "attiguard/reach/conreach.hpp"
 #include "attiguard/reach/soundness.hpp"
+#include "reach/paper_example.hpp"
 
 namespace ar = attiguard::reach;
 
 namespace {
-struct Fixture {
-  ar::LinearOmegaLoop loop{ar::Vec3(-2, -1, -3).asDiagonal()};
-  ar::InitialSet initial{ar::Mat3::Identity(), 0.1, ar::Vec3(0.65, 0.54, 0.61), 0.1};
-  ar::ReachResult result;
+struct Fixture : attiguard::test::PaperReach {
   ar::SoundnessSettings settings;
-  Fixture() {
-    ar::ConReachSettings s;
-    s.horizon = 0.5;
-    s.steps = 5;
-    result = ar::run_conreach(loop, initial, s);
+  Fixture() : PaperReach(0.5, 5) {
     settings.samples = 400;
     settings.threads = 1;
   }

@@ -3,11 +3,14 @@
 #include "attiguard/scenario/document.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <system_error>
+
+#include <nlohmann/json.hpp>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -31,7 +34,82 @@ std::string syntax_error_message(const std::filesystem::path& path, const toml::
   return text;
 }
 
+/// Where a converted node goes: a key of a table, or the end of an array.
+struct Target {
+  toml::table* table{nullptr};
+  std::string_view key;
+  toml::array* array{nullptr};
+  template <class Node>
+  void put(Node&& node) const {
+    if (table != nullptr) {
+      table->insert(key, std::forward<Node>(node));
+    } else {
+      array->push_back(std::forward<Node>(node));
+    }
+  }
+};
+
+/// Converts the JSON value `v` at key path `where` (for messages) into its TOML node at `to`.
+void convert(const nlohmann::json& v, const std::filesystem::path& path, const std::string& where,
+             const Target& to);
+
+toml::table table_of(const nlohmann::json& object, const std::filesystem::path& path,
+                     const std::string& where) {
+  toml::table t;
+  for (const auto& [key, value] : object.items()) {
+    convert(value, path, where.empty() ? key : where + "." + key, Target{&t, key, nullptr});
+  }
+  return t;
+}
+
+void convert(const nlohmann::json& v, const std::filesystem::path& path, const std::string& where,
+             const Target& to) {
+  using nlohmann::json;
+  switch (v.type()) {
+    case json::value_t::object:
+      to.put(table_of(v, path, where));
+      return;
+    case json::value_t::array: {
+      toml::array a;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        convert(v[i], path, where + "[" + std::to_string(i) + "]", Target{nullptr, {}, &a});
+      }
+      to.put(std::move(a));
+      return;
+    }
+    case json::value_t::boolean:
+      to.put(v.get<bool>());
+      return;
+    case json::value_t::number_integer:
+      to.put(v.get<std::int64_t>());
+      return;
+    case json::value_t::number_unsigned:
+      if (v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX)) {
+        throw InputError(path.string() + ": " + where + ": integer too large");
+      }
+      to.put(static_cast<std::int64_t>(v.get<std::uint64_t>()));
+      return;
+    case json::value_t::number_float:
+      to.put(v.get<double>());
+      return;
+    case json::value_t::string:
+      to.put(v.get<std::string>());
+      return;
+    default:
+      throw InputError(path.string() + ": " + where + ": a scenario value cannot be " +
+                       (v.is_null() ? std::string("None (null)") : std::string(v.type_name())));
+  }
+}
+
 }  // namespace
+
+Document document_from_json(const nlohmann::json& value, const std::filesystem::path& path) {
+  if (!value.is_object()) {
+    throw InputError(path.string() + ": a scenario must be a table (dict), got " +
+                     std::string(value.type_name()));
+  }
+  return Document{path, table_of(value, path, "")};
+}
 
 Document parse_document(std::string_view text, const std::filesystem::path& path) {
   Document doc;

@@ -8,18 +8,12 @@
 #include <initializer_list>
 
 #include "attiguard/scenario/messages.hpp"
-#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
 
 namespace {
-
-void declare(const TableReader& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) {
-    (void)table.has(key);
-  }
-}
 
 std::string num(double x) { return detail::format_number(x); }
 
@@ -29,33 +23,13 @@ constexpr double kMaxThrustTiltDeg = 10.0;
 
 }  // namespace
 
-double minimum_mission_time(const WaypointScenario& sc) noexcept {
-  const double a_max = sc.mission.T_max / sc.mission.mass;
-  double t = 0.0;
-  lie::Vec3 from = sc.p0_i;
-  for (const lie::Vec3& wp : sc.waypoints_i) {
-    t += 2.0 * std::sqrt((wp - from).norm() / a_max);
-    from = wp;
-  }
-  return t;
-}
-
-WaypointScenario parse_waypoint(const Document& doc) {
-  WaypointScenario sc;
+sim::WaypointScenario parse_waypoint(const Document& doc) {
+  sim::WaypointScenario sc;
   guidance::MissionParams& mp = sc.mission;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
                  "attitude_control", "fine_position", "guidance", "simulation"});
-  const std::string kind = root.string("kind");
-  if (kind != "waypoint") {
-    root.fail("kind", "expected \"waypoint\", got " + detail::quoted(kind, '"'));
-  }
-  const std::string stem = doc.path.stem().string();
-  sc.name = root.string_or("name", stem.empty() ? "scenario" : stem);
-  if (sc.name.empty()) {
-    root.fail("name", "must not be empty");
-  }
-  (void)root.string_or("description", "");
+  sc.name = read_header(root, doc, "waypoint");
 
   const TableReader craft = root.table("spacecraft");
   declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque",

@@ -19,7 +19,7 @@
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/scenario/document.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 /// What a dispersion changes.
 enum class DispersionType { number, vector, inertia, attitude, direction };
@@ -69,7 +69,7 @@ struct DispersionPlan {
 
 /// Draws every dispersion from `rng` and writes the dispersed values into `root` (the nominal
 /// document's table); appends the drawn values (dispersion_columns order) to `values`.
-void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
                        toml::table& root, std::vector<double>& values);
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

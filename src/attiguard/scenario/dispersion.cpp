@@ -1,4 +1,4 @@
-#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <array>
@@ -7,14 +7,14 @@
 #include <optional>
 #include <string_view>
 
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/key_path.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 namespace {
 
@@ -110,7 +110,7 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
 double as_double(const toml::node& n) { return n.value<double>().value_or(0.0); }
 
 /// A scalar draw around `nominal`.
-double draw_scalar(const Dispersion& d, double nominal, Rng& rng) {
+double draw_scalar(const Dispersion& d, double nominal, campaign::Rng& rng) {
   const double mean = d.has_mean ? d.mean : nominal;
   const double lo = d.has_bounds ? d.min : nominal - d.delta;
   const double hi = d.has_bounds ? d.max : nominal + d.delta;
@@ -130,7 +130,7 @@ double draw_scalar(const Dispersion& d, double nominal, Rng& rng) {
 }
 
 /// A unit vector uniform on the sphere.
-Vec3 unit_vector(Rng& rng) {
+Vec3 unit_vector(campaign::Rng& rng) {
   const double z = rng.uniform(-1.0, 1.0);
   const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
@@ -138,7 +138,7 @@ Vec3 unit_vector(Rng& rng) {
 }
 
 /// A rotation vector uniform (Haar measure) within the geodesic ball of radius max_angle.
-Vec3 ball_rotation(double max_angle, Rng& rng) {
+Vec3 ball_rotation(double max_angle, campaign::Rng& rng) {
   const double norm = 1.0 - std::cos(max_angle);
   for (int i = 0; i < 100000; ++i) {
     const double theta = rng.uniform(0.0, max_angle);
@@ -148,7 +148,7 @@ Vec3 ball_rotation(double max_angle, Rng& rng) {
 }
 
 /// A unit vector uniform on the cap of half-angle `alpha` around the unit vector `n`.
-Vec3 cap_vector(const Vec3& n, double alpha, Rng& rng) {
+Vec3 cap_vector(const Vec3& n, double alpha, campaign::Rng& rng) {
   const double c = 1.0 - rng.uniform01() * (1.0 - std::cos(alpha));
   const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
   const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
@@ -226,7 +226,7 @@ std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
   return cols;
 }
 
-void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
                        toml::table& root, std::vector<double>& values) {
   for (const Dispersion& d : plan.items) {
     const toml::node* nom = resolve_key_path(nominal.root, d.key);
@@ -305,4 +305,4 @@ void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nom
   }
 }
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

@@ -4,15 +4,16 @@
 #include <numbers>
 #include <string>
 
-#include "attiguard/campaign/dispersion.hpp"
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/key_path.hpp"
+#include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 namespace {
 
 constexpr const char* kBase = R"(
@@ -38,7 +39,7 @@ TEST(CampaignDispersion, NumberStaysInBoundsAndIsWritten) {
   const auto nominal = nominal_document(doc);
   EXPECT_EQ(nominal.root.get("dispersions"), nullptr);
   ASSERT_EQ(dispersion_columns(plan), std::vector<std::string>{"control.kp"});
-  Rng rng(3);
+  campaign::Rng rng(3);
   for (int i = 0; i < 1000; ++i) {
     toml::table root = nominal.root;
     std::vector<double> values;
@@ -55,7 +56,7 @@ TEST(CampaignDispersion, InertiaStaysPhysical) {
       R"("body.inertia" = { type = "inertia", moments_rel_sigma = 0.3, axes_max_angle_deg = 90 })");
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
-  Rng rng(4);
+  campaign::Rng rng(4);
   for (int i = 0; i < 2000; ++i) {
     toml::table root = nominal.root;
     std::vector<double> v;
@@ -75,7 +76,7 @@ TEST(CampaignDispersion, AttitudeBallAndDirectionCap) {
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
   const lie::Mat3 R0 = lie::exp(lie::Vec3(0, 0, 40.0 * std::numbers::pi / 180.0));
-  Rng rng(5);
+  campaign::Rng rng(5);
   for (int i = 0; i < 2000; ++i) {
     toml::table root = nominal.root;
     std::vector<double> v;
@@ -93,7 +94,7 @@ TEST(CampaignDispersion, UniformAttitudeCoversSO3) {
   const auto doc = doc_with(R"("initial.attitude" = { type = "attitude", mode = "uniform" })");
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
-  Rng rng(6);
+  campaign::Rng rng(6);
   double mean_trace = 0.0;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
@@ -131,4 +132,4 @@ TEST(CampaignDispersion, BadEntriesAreLocatedInputErrors) {
 }
 
 }  // namespace
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

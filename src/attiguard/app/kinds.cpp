@@ -1,0 +1,132 @@
+#include "attiguard/app/kinds.hpp"
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/sim/mission_run.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/rigid_body_run.hpp"
+#include "attiguard/sim/waypoint_run.hpp"
+
+namespace attiguard::app {
+
+namespace {
+
+using scenario::Document;
+
+/// Runs `simulate` (rows into the sink the options ask for, returns the summary), then adds
+/// wall_time_s and writes DIR/summary.json when files are written: the one place a run's files
+/// are written.
+nlohmann::json run_with_sink(const RunOptions& options,
+                             const std::function<nlohmann::json(io::RowSink&)>& simulate) {
+  const auto start = std::chrono::steady_clock::now();
+  io::NullRowSink none;
+  std::optional<io::CsvRowSink> csv;
+  if (options.write_files) {
+    io::ensure_directory(options.out_dir);
+    csv.emplace(options.out_dir / "trajectory.csv");
+  }
+  io::RowSink* file_rows = csv ? static_cast<io::RowSink*>(&*csv) : nullptr;
+  std::optional<io::TeeRowSink> tee;
+  if (file_rows && options.rows) tee.emplace(*file_rows, *options.rows);
+  io::RowSink& rows = tee ? *tee : file_rows ? *file_rows : options.rows ? *options.rows : none;
+  nlohmann::json summary = simulate(rows);
+  summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.write_files) io::write_json(options.out_dir / "summary.json", summary);
+  return summary;
+}
+
+void check_rigid_body(const Document& doc) { (void)scenario::parse_rigid_body(doc); }
+
+nlohmann::json run_rigid_body(const Document& doc, const RunOptions& options) {
+  const sim::RigidBodyScenario sc = scenario::parse_rigid_body(doc);
+  return run_with_sink(options, [&](io::RowSink& rows) {
+    return sim::rigid_body_summary(sc, sim::simulate_rigid_body(sc, rows));
+  });
+}
+
+void check_pet_erg(const Document& doc) { (void)scenario::parse_pet_erg(doc); }
+
+nlohmann::json run_pet_erg(const Document& doc, const RunOptions& options) {
+  const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
+  return run_with_sink(options, [&](io::RowSink& rows) {
+    return sim::pet_erg_summary(sc, sim::record_pet_erg(sc, rows));
+  });
+}
+
+void check_waypoint(const Document& doc) { (void)scenario::parse_waypoint(doc); }
+
+nlohmann::json run_waypoint(const Document& doc, const RunOptions& options) {
+  const sim::WaypointScenario sc = scenario::parse_waypoint(doc);
+  return run_with_sink(options, [&](io::RowSink& rows) {
+    return sim::waypoint_summary(sc, sim::record_waypoint(sc, rows));
+  });
+}
+
+void check_mission(const Document& doc) { (void)scenario::parse_mission(doc); }
+
+nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
+  const sim::MissionScenario sc = scenario::parse_mission(doc);
+  return run_with_sink(options, [&](io::RowSink& rows) {
+    return sim::mission_summary(sc, sim::record_mission(sc, rows));
+  });
+}
+
+void check_reach(const Document& doc) { (void)scenario::parse_reach(doc); }
+
+// Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
+nlohmann::json run_reach(const Document& doc, const RunOptions&) {
+  scenario::TableReader(doc).fail("kind", "scenario kind 'reach' is analysed with `attiguard reach " +
+                                              doc.path.string() + " --out DIR`, not `attiguard run`");
+}
+
+constexpr std::array<KindHandler, 5> registry{{
+    {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
+     &check_rigid_body, &run_rigid_body},
+    {"pet_erg",
+     "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
+     &check_pet_erg, &run_pet_erg},
+    {"waypoint",
+     "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
+     "decelerate/fine state machine)",
+     &check_waypoint, &run_waypoint},
+    {"mission",
+     "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
+     "slews; also flies the unconstrained twin",
+     &check_mission, &run_mission},
+    {"reach",
+     "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
+     &check_reach, &run_reach},
+}};
+
+}  // namespace
+
+std::span<const KindHandler> kinds() { return registry; }
+
+const KindHandler& handler_for(const Document& doc) {
+  const std::string kind = scenario::scenario_kind(doc);
+  for (const KindHandler& h : registry) {
+    if (h.name == kind) {
+      return h;
+    }
+  }
+  std::string known;
+  for (const KindHandler& h : registry) {
+    known += (known.empty() ? "" : ", ") + std::string(h.name);
+  }
+  scenario::TableReader(doc).fail("kind",
+                                  "unknown scenario kind '" + kind + "' (known kinds: " + known + ")");
+}
+
+}  // namespace attiguard::app

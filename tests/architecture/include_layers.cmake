@@ -1,0 +1,75 @@
+# Layering test (docs/architecture.md, "Layers"): every `#include "attiguard/<layer>/..."` of
+# src/attiguard must point to the including file's own layer or to a layer of a LOWER rank in the
+# table of docs/architecture.md; layers of the same rank do not include each other. Also fails on
+# a directory of src/attiguard that the table does not list, and on any file outside scenario/
+# that contains the lowercase word "toml" (only scenario/ knows the file format's library).
+#
+#   cmake -DSOURCE_DIR=<repository> -P tests/architecture/include_layers.cmake
+cmake_minimum_required(VERSION 3.25)
+if(NOT SOURCE_DIR)
+  message(FATAL_ERROR "include_layers.cmake: pass -DSOURCE_DIR=<repository root>")
+endif()
+
+# The rank table: rows "| N | `layer/` | ..." of docs/architecture.md.
+file(STRINGS ${SOURCE_DIR}/docs/architecture.md rows REGEX "^\\| *[0-9]+ *\\| *`[a-z_]+/`")
+set(layers "")
+foreach(row IN LISTS rows)
+  string(REGEX MATCH "^\\| *([0-9]+) *\\| *`([a-z_]+)/`" _ "${row}")
+  set(rank_${CMAKE_MATCH_2} ${CMAKE_MATCH_1})
+  list(APPEND layers ${CMAKE_MATCH_2})
+endforeach()
+list(LENGTH layers n_layers)
+if(n_layers LESS 5)
+  message(FATAL_ERROR "docs/architecture.md: layer table not found (rows \"| rank | `dir/` |\")")
+endif()
+
+set(violations 0)
+file(GLOB layer_dirs LIST_DIRECTORIES true ${SOURCE_DIR}/src/attiguard/*)
+foreach(dir IN LISTS layer_dirs)
+  if(IS_DIRECTORY ${dir})
+    get_filename_component(layer ${dir} NAME)
+    if(NOT DEFINED rank_${layer})
+      message(SEND_ERROR "src/attiguard/${layer}/: not in the layer table of docs/architecture.md")
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endif()
+endforeach()
+
+set(checked 0)
+file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}/src/attiguard ${SOURCE_DIR}/src/attiguard/*)
+foreach(rel IN LISTS sources)
+  string(REGEX MATCH "^[a-z_]+" layer "${rel}")
+  if(NOT DEFINED rank_${layer})
+    continue()
+  endif()
+  file(STRINGS ${SOURCE_DIR}/src/attiguard/${rel} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"attiguard/")
+  foreach(line IN LISTS includes)
+    string(REGEX MATCH "\"attiguard/([a-z_]+)/" _ "${line}")
+    set(target ${CMAKE_MATCH_1})
+    math(EXPR checked "${checked} + 1")
+    if(target STREQUAL layer)
+      continue()
+    endif()
+    if(NOT DEFINED rank_${target})
+      message(SEND_ERROR "src/attiguard/${rel}: ${line}: layer ${target}/ is not in docs/architecture.md")
+      math(EXPR violations "${violations} + 1")
+    elseif(NOT rank_${target} LESS rank_${layer})
+      message(SEND_ERROR "src/attiguard/${rel}: ${line}: ${layer}/ (rank ${rank_${layer}}) "
+                         "must not include ${target}/ (rank ${rank_${target}}), see docs/architecture.md")
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endforeach()
+  if(NOT layer STREQUAL "scenario")
+    file(STRINGS ${SOURCE_DIR}/src/attiguard/${rel} toml_lines REGEX "toml")
+    foreach(line IN LISTS toml_lines)
+      message(SEND_ERROR "src/attiguard/${rel}: mentions \"toml\" outside scenario/: ${line}")
+      math(EXPR violations "${violations} + 1")
+    endforeach()
+  endif()
+endforeach()
+
+if(violations GREATER 0)
+  message(FATAL_ERROR "${violations} layering violation(s) (${checked} includes checked)")
+endif()
+message(STATUS "include_layers: ${checked} includes of ${n_layers} layers point downward; "
+               "\"toml\" only in scenario/")

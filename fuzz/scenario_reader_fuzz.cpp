@@ -10,10 +10,10 @@
 #include <cstdint>
 #include <string_view>
 
-#include "attiguard/scenario/dispersion.hpp"
-#include "attiguard/core/errors.hpp"
-#include "attiguard/scenario/document.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/document.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
@@ -21,8 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const attiguard::scenario::Document doc =
         attiguard::scenario::parse_document(text, "fuzz.toml");
     if (doc.root.contains("dispersions")) {
-      (void)attiguard::read_dispersions(doc);
-      const auto nominal = attiguard::nominal_document(doc);
+      (void)attiguard::scenario::read_dispersions(doc);
+      const auto nominal = attiguard::scenario::nominal_document(doc);
       attiguard::app::handler_for(nominal).check(nominal);
     } else {
       attiguard::app::handler_for(doc).check(doc);

@@ -47,43 +47,21 @@ nlohmann::json run_with_sink(const RunOptions& options,
   return summary;
 }
 
-void check_rigid_body(const Document& doc) { (void)scenario::parse_rigid_body(doc); }
-
-nlohmann::json run_rigid_body(const Document& doc, const RunOptions& options) {
-  const sim::RigidBodyScenario sc = scenario::parse_rigid_body(doc);
-  return run_with_sink(options, [&](io::RowSink& rows) {
-    return sim::rigid_body_summary(sc, sim::simulate_rigid_body(sc, rows));
-  });
+/// `check` of a simulation kind: parse (and validate) only.
+template <auto Parse>
+void check_kind(const Document& doc) {
+  (void)Parse(doc);
 }
 
-void check_pet_erg(const Document& doc) { (void)scenario::parse_pet_erg(doc); }
-
-nlohmann::json run_pet_erg(const Document& doc, const RunOptions& options) {
-  const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
-  return run_with_sink(options, [&](io::RowSink& rows) {
-    return sim::pet_erg_summary(sc, sim::record_pet_erg(sc, rows));
-  });
+/// `run` of a simulation kind: Parse the document into the kind's configuration, Simulate it
+/// with the rows into the chosen sink (the typed result), Summarize the result (the kind's one
+/// summary writer).
+template <auto Parse, auto Simulate, auto Summarize>
+nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
+  const auto config = Parse(doc);
+  return run_with_sink(options,
+                       [&](io::RowSink& rows) { return Summarize(config, Simulate(config, rows)); });
 }
-
-void check_waypoint(const Document& doc) { (void)scenario::parse_waypoint(doc); }
-
-nlohmann::json run_waypoint(const Document& doc, const RunOptions& options) {
-  const sim::WaypointScenario sc = scenario::parse_waypoint(doc);
-  return run_with_sink(options, [&](io::RowSink& rows) {
-    return sim::waypoint_summary(sc, sim::record_waypoint(sc, rows));
-  });
-}
-
-void check_mission(const Document& doc) { (void)scenario::parse_mission(doc); }
-
-nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
-  const sim::MissionScenario sc = scenario::parse_mission(doc);
-  return run_with_sink(options, [&](io::RowSink& rows) {
-    return sim::mission_summary(sc, sim::record_mission(sc, rows));
-  });
-}
-
-void check_reach(const Document& doc) { (void)scenario::parse_reach(doc); }
 
 // Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
 nlohmann::json run_reach(const Document& doc, const RunOptions&) {
@@ -93,21 +71,25 @@ nlohmann::json run_reach(const Document& doc, const RunOptions&) {
 
 constexpr std::array<KindHandler, 5> registry{{
     {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
-     &check_rigid_body, &run_rigid_body},
+     &check_kind<&scenario::parse_rigid_body>,
+     &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>},
     {"pet_erg",
      "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
-     &check_pet_erg, &run_pet_erg},
+     &check_kind<&scenario::parse_pet_erg>,
+     &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>},
     {"waypoint",
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",
-     &check_waypoint, &run_waypoint},
+     &check_kind<&scenario::parse_waypoint>,
+     &run_kind<&scenario::parse_waypoint, &sim::record_waypoint, &sim::waypoint_summary>},
     {"mission",
      "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
      "slews; also flies the unconstrained twin",
-     &check_mission, &run_mission},
+     &check_kind<&scenario::parse_mission>,
+     &run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>},
     {"reach",
      "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
-     &check_reach, &run_reach},
+     &check_kind<&scenario::parse_reach>, &run_reach},
 }};
 
 }  // namespace

@@ -9,10 +9,23 @@
 #include <vector>
 
 #include "attiguard/control/quaternion_pid.hpp"
+#include "attiguard/core/name_table.hpp"
 #include "attiguard/guidance/mission.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 
 namespace attiguard::sim {
+
+/// The names of the guidance's choices in scenario files ([guidance]) and summary.json
+/// (`parameters`), docs/scenario-format.md, "waypoint": guidance::FlipTiming, and the two
+/// switches of guidance::MissionParams (pointing_thrust_axis, brake_along_velocity).
+inline constexpr NameTable<guidance::FlipTiming, 2> kFlipTimingNames{
+    {{{guidance::FlipTiming::immediate, "immediate"},
+      {guidance::FlipTiming::braking_point, "braking_point"}}}};
+/// `pointing_error`: false = quaternion error ‖ε_{d,b}‖, true = thrust-axis error.
+inline constexpr NameTable<bool, 2> kPointingErrorNames{{{{false, "quaternion"}, {true, "thrust_axis"}}}};
+/// `braking_distance`: true = along the velocity (distance to closest approach), false = ‖e‖.
+inline constexpr NameTable<bool, 2> kBrakingDistanceNames{
+    {{{true, "along_velocity"}, {false, "norm"}}}};
 
 /// Everything a `waypoint` run needs, validated.
 struct WaypointScenario {

@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const attiguard::scenario::Document doc =
         attiguard::scenario::parse_document(text, "fuzz.toml");
-    if (doc.root.contains("dispersions")) {
+    if (doc.has_top_level("dispersions")) {
       (void)attiguard::scenario::read_dispersions(doc);
       const auto nominal = attiguard::scenario::nominal_document(doc);
       attiguard::app::handler_for(nominal).check(nominal);

@@ -1,8 +1,11 @@
 # Layering test (docs/architecture.md, "Layers"): every `#include "attiguard/<layer>/..."` of
 # src/attiguard must point to the including file's own layer or to a layer of a LOWER rank in the
 # table of docs/architecture.md; layers of the same rank do not include each other. Also fails on
-# a directory of src/attiguard that the table does not list, and on any file outside scenario/
-# that contains the lowercase word "toml" (only scenario/ knows the file format's library).
+# a directory of src/attiguard that the table does not list, on any file outside scenario/
+# that contains the lowercase word "toml" (only scenario/ knows the file format's library), and
+# on a file outside scenario/ (src/attiguard or the Python bindings python/src) that includes a
+# scenario/ header which includes the parser's headers, directly or through other scenario/
+# headers (so that the parser is compiled into scenario/ alone).
 #
 #   cmake -DSOURCE_DIR=<repository> -P tests/architecture/include_layers.cmake
 cmake_minimum_required(VERSION 3.25)
@@ -68,8 +71,63 @@ foreach(rel IN LISTS sources)
   endif()
 endforeach()
 
+# scenario/ headers that include the parser, directly or through other scenario/ headers.
+file(GLOB scenario_headers RELATIVE ${SOURCE_DIR}/src/attiguard/scenario
+     ${SOURCE_DIR}/src/attiguard/scenario/*.hpp)
+set(parser_headers "")
+foreach(h IN LISTS scenario_headers)
+  file(STRINGS ${SOURCE_DIR}/src/attiguard/scenario/${h} direct REGEX "^[ \t]*#[ \t]*include[ \t]*<toml")
+  if(direct)
+    list(APPEND parser_headers ${h})
+  endif()
+endforeach()
+set(grew TRUE)
+while(grew)
+  set(grew FALSE)
+  foreach(h IN LISTS scenario_headers)
+    if(h IN_LIST parser_headers)
+      continue()
+    endif()
+    file(STRINGS ${SOURCE_DIR}/src/attiguard/scenario/${h} incs REGEX "#[ \t]*include[ \t]*\"attiguard/scenario/")
+    foreach(line IN LISTS incs)
+      string(REGEX MATCH "attiguard/scenario/([a-z_]+\\.hpp)" _ "${line}")
+      if(CMAKE_MATCH_1 IN_LIST parser_headers)
+        list(APPEND parser_headers ${h})
+        set(grew TRUE)
+        break()
+      endif()
+    endforeach()
+  endforeach()
+endwhile()
+file(GLOB_RECURSE outside ${SOURCE_DIR}/src/attiguard/*.cpp ${SOURCE_DIR}/src/attiguard/*.hpp
+     ${SOURCE_DIR}/python/src/*.cpp ${SOURCE_DIR}/python/src/*.hpp)
+foreach(f IN LISTS outside)
+  if(f MATCHES "/src/attiguard/scenario/")
+    continue()
+  endif()
+  file(STRINGS ${f} incs REGEX "#[ \t]*include[ \t]*[<\"]")
+  foreach(line IN LISTS incs)
+    if(line MATCHES "<toml")
+      message(SEND_ERROR "${f}: ${line}: only scenario/ includes the scenario file parser")
+      math(EXPR violations "${violations} + 1")
+    elseif(line MATCHES "attiguard/scenario/([a-z_]+\\.hpp)" AND CMAKE_MATCH_1 IN_LIST parser_headers)
+      message(SEND_ERROR "${f}: ${line}: scenario/${CMAKE_MATCH_1} includes the scenario file "
+                         "parser; use scenario/document.hpp and the parse_* headers")
+      math(EXPR violations "${violations} + 1")
+    endif()
+  endforeach()
+  if(f MATCHES "/python/src/")
+    file(STRINGS ${f} toml_lines REGEX "toml")
+    foreach(line IN LISTS toml_lines)
+      message(SEND_ERROR "${f}: mentions \"toml\" outside scenario/: ${line}")
+      math(EXPR violations "${violations} + 1")
+    endforeach()
+  endif()
+endforeach()
+
 if(violations GREATER 0)
   message(FATAL_ERROR "${violations} layering violation(s) (${checked} includes checked)")
 endif()
+list(JOIN parser_headers ", " parser_list)
 message(STATUS "include_layers: ${checked} includes of ${n_layers} layers point downward; "
-               "\"toml\" only in scenario/")
+               "\"toml\" only in scenario/; parser headers (${parser_list}) included only there")

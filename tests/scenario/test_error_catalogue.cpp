@@ -52,7 +52,7 @@ std::string error_of(const std::string& relative) {
   const std::string text = slurp(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / relative);
   try {
     const Document doc = parse_document(text, relative);
-    if (doc.root.contains("dispersions")) {  // as attiguard campaign (app/campaign_runner.cpp)
+    if (doc.has_top_level("dispersions")) {  // as attiguard campaign (app/campaign_runner.cpp)
       const Document nominal = nominal_document(doc);
       const app::KindHandler& h = app::handler_for(nominal);
       (void)read_dispersions(doc);

@@ -72,9 +72,9 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
 }
 
 scenario::Document dispersed_document(const Campaign& c, Rng& rng, std::vector<double>& values) {
-  scenario::Document d{c.nominal.path, c.nominal.root};
+  scenario::Document d = c.nominal;
   values.clear();
-  scenario::apply_dispersions(c.plan, c.nominal, rng, d.root, values);
+  scenario::apply_dispersions(c.plan, c.nominal, rng, d, values);
   return d;
 }
 

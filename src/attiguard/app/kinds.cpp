@@ -11,7 +11,6 @@
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
-#include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
 #include "attiguard/sim/mission_run.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
@@ -65,8 +64,8 @@ nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
 
 // Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
 nlohmann::json run_reach(const Document& doc, const RunOptions&) {
-  scenario::TableReader(doc).fail("kind", "scenario kind 'reach' is analysed with `attiguard reach " +
-                                              doc.path.string() + " --out DIR`, not `attiguard run`");
+  scenario::fail_at(doc, "kind", "scenario kind 'reach' is analysed with `attiguard reach " +
+                                     doc.path.string() + " --out DIR`, not `attiguard run`");
 }
 
 constexpr std::array<KindHandler, 5> registry{{
@@ -107,8 +106,7 @@ const KindHandler& handler_for(const Document& doc) {
   for (const KindHandler& h : registry) {
     known += (known.empty() ? "" : ", ") + std::string(h.name);
   }
-  scenario::TableReader(doc).fail("kind",
-                                  "unknown scenario kind '" + kind + "' (known kinds: " + known + ")");
+  scenario::fail_at(doc, "kind", "unknown scenario kind '" + kind + "' (known kinds: " + known + ")");
 }
 
 }  // namespace attiguard::app

@@ -12,7 +12,7 @@ namespace attiguard::cli {
 
 void check_command(const std::filesystem::path& scenario_path) {
   const scenario::Document doc = scenario::load_document(scenario_path);
-  if (doc.root.contains("dispersions")) {  // a campaign scenario (docs/campaigns.md)
+  if (doc.has_top_level("dispersions")) {  // a campaign scenario (docs/campaigns.md)
     const scenario::Document nominal = scenario::nominal_document(doc);
     const app::KindHandler& handler = app::handler_for(nominal);
     const scenario::DispersionPlan plan = scenario::read_dispersions(doc);

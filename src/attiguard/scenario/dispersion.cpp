@@ -7,6 +7,7 @@
 #include <optional>
 #include <string_view>
 
+#include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/key_path.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
@@ -31,7 +32,7 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
   static constexpr std::array<std::string_view, 5> kTypes{"number", "vector", "inertia",
                                                           "attitude", "direction"};
   const std::string type = t.string_or("type", "number", kTypes);
-  const auto pos = resolve_key_path(nominal.root, key);
+  const auto pos = resolve_key_path(root_table(nominal), key);
   if (!pos) t.fail_here("no value at key path '" + key + "' in the scenario");
   const toml::node& value = *pos;
   auto is_number = [](const toml::node& n) { return n.is_floating_point() || n.is_integer(); };
@@ -166,17 +167,17 @@ scenario::TableReader single_value_reader(const scenario::Document& holder) {
 }
 
 scenario::Document holder_of(const scenario::Document& nominal, const toml::node& value) {
-  scenario::Document h{nominal.path, toml::table{}};
-  h.root.insert("value", value);
+  scenario::Document h(nominal.path);
+  root_table(h).insert("value", value);
   return h;
 }
 
 }  // namespace
 
 scenario::Document nominal_document(const scenario::Document& doc) {
-  scenario::Document nominal{doc.path, doc.root};
-  nominal.root.erase("dispersions");
-  nominal.root.erase("campaign");
+  scenario::Document nominal = doc;
+  root_table(nominal).erase("dispersions");
+  root_table(nominal).erase("campaign");
   return nominal;
 }
 
@@ -185,7 +186,7 @@ DispersionPlan read_dispersions(const scenario::Document& doc) {
   scenario::TableReader root(doc);
   DispersionPlan plan;
   const scenario::TableReader table = root.table("dispersions");
-  const toml::table* raw = doc.root["dispersions"].as_table();
+  const toml::table* raw = root_table(doc)["dispersions"].as_table();
   if (raw->empty()) table.fail_here("[dispersions] must list at least one dispersed value");
   for (const auto& [k, v] : *raw) {
     (void)v;
@@ -227,9 +228,10 @@ std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
 }
 
 void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
-                       toml::table& root, std::vector<double>& values) {
+                       Document& out, std::vector<double>& values) {
+  toml::table& root = root_table(out);
   for (const Dispersion& d : plan.items) {
-    const toml::node* nom = resolve_key_path(nominal.root, d.key);
+    const toml::node* nom = resolve_key_path(root_table(nominal), d.key);
     if (nom == nullptr) throw InputError(nominal.path.string() + ": no value at '" + d.key + "'");
     switch (d.type) {
       case DispersionType::number: {

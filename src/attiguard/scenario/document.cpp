@@ -1,6 +1,7 @@
 // Scenario documents: reading and parsing TOML files (docs/scenario-format.md, "Error messages").
 
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/document_tree.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -8,7 +9,9 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <new>
 #include <system_error>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -108,15 +111,48 @@ Document document_from_json(const nlohmann::json& value, const std::filesystem::
     throw InputError(path.string() + ": a scenario must be a table (dict), got " +
                      std::string(value.type_name()));
   }
-  return Document{path, table_of(value, path, "")};
+  Document doc(path);
+  root_table(doc) = table_of(value, path, "");
+  return doc;
+}
+
+Document::Document() : tree_(std::make_unique<DocumentTree>()) {}
+Document::Document(std::filesystem::path p)
+    : path(std::move(p)), tree_(std::make_unique<DocumentTree>()) {}
+Document::Document(const Document& other)
+    : path(other.path), tree_(std::make_unique<DocumentTree>(*other.tree_)) {}
+Document& Document::operator=(const Document& other) {
+  if (this != &other) {
+    path = other.path;
+    tree_ = std::make_unique<DocumentTree>(*other.tree_);
+  }
+  return *this;
+}
+// A moved-from document keeps a valid empty tree (tree() is never a null dereference).
+Document::Document(Document&& other) noexcept
+    : path(std::move(other.path)), tree_(std::exchange(other.tree_, nullptr)) {
+  other.tree_.reset(new (std::nothrow) DocumentTree());
+}
+Document& Document::operator=(Document&& other) noexcept {
+  if (this != &other) {
+    path = std::move(other.path);
+    tree_.swap(other.tree_);
+  }
+  return *this;
+}
+Document::~Document() = default;
+
+bool Document::has_top_level(std::string_view key) const { return tree_->root.contains(key); }
+
+void fail_at(const Document& doc, std::string_view key, std::string_view message) {
+  TableReader(doc).fail(key, message);
 }
 
 Document parse_document(std::string_view text, const std::filesystem::path& path) {
-  Document doc;
-  doc.path = path;
+  Document doc(path);
 #if TOML_EXCEPTIONS
   try {
-    doc.root = toml::parse(text, path.string());
+    root_table(doc) = toml::parse(text, path.string());
   } catch (const toml::parse_error& e) {
     throw InputError(syntax_error_message(path, e));
   }
@@ -125,7 +161,7 @@ Document parse_document(std::string_view text, const std::filesystem::path& path
   if (!result) {
     throw InputError(syntax_error_message(path, result.error()));
   }
-  doc.root = std::move(result).table();
+  root_table(doc) = std::move(result).table();
 #endif
   return doc;
 }

@@ -4,6 +4,7 @@
 #include "attiguard/scenario/mission_scenario.hpp"
 
 #include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
 
@@ -13,9 +14,9 @@ sim::MissionScenario parse_mission(const Document& doc) {
   sim::MissionScenario sc;
   // The waypoint part: the same document without the governor's keys, read as kind `waypoint`
   // (so its messages and checks are exactly those of the waypoint kind).
-  Document wp{doc.path, doc.root};
-  for (const char* key : {"governor", "control", "erg", "cones"}) wp.root.erase(key);
-  wp.root.insert_or_assign("kind", "waypoint");
+  Document wp = doc;
+  for (const char* key : {"governor", "control", "erg", "cones"}) root_table(wp).erase(key);
+  root_table(wp).insert_or_assign("kind", "waypoint");
   sc.waypoint = parse_waypoint(wp);
 
   // The governor part: the blocks of kind pet_erg (common_tables.hpp), J from [spacecraft].

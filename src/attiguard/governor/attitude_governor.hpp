@@ -126,6 +126,8 @@ class AttitudeGovernor {
   [[nodiscard]] const TorqueThreshold& torque_threshold() const noexcept { return threshold_; }
   /// The loose closed-form bound on Γ_d (docs/pet-erg.md).
   [[nodiscard]] double gamma_d_loose() const noexcept { return gamma_d_loose_; }
+  /// The cap k_p(2 − ε_Γ) of Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1).
+  [[nodiscard]] double gamma_cap() const noexcept { return gamma_cap_; }
 
  private:
   GovernorParams params_;

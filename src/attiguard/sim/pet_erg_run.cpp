@@ -80,6 +80,7 @@ PetErgResult simulate_pet_erg(const PetErgScenario& sc,
   r.gamma_d = gov.gamma_d();
   r.gamma_d_upper = gov.torque_threshold().upper_bound;
   r.gamma_d_loose = gov.gamma_d_loose();
+  r.gamma_cap = gov.gamma_cap();
   r.gamma_g_initial = gov.gamma_g(sc.R_g0);
   r.gamma_initial = gov.gamma(sc.R_g0);
   r.V_initial = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
@@ -200,7 +201,7 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["gamma_d"] = r.gamma_d;
   j["gamma_d_upper_bound"] = r.gamma_d_upper;
   j["gamma_d_loose"] = r.gamma_d_loose;
-  j["gamma_cap"] = sc.params.gains.kp * (2.0 - sc.params.epsilon_gamma);
+  j["gamma_cap"] = r.gamma_cap;
   j["gamma_g_initial"] = finite_or_null(r.gamma_g_initial);
   j["gamma_initial"] = r.gamma_initial;
   j["V_initial"] = r.V_initial;

@@ -30,6 +30,7 @@ struct PetErgResult {
   double gamma_d{0.0};           ///< Γ_d (certified lower bound)
   double gamma_d_upper{0.0};     ///< attained value bracketing the exact Γ_d from above
   double gamma_d_loose{0.0};     ///< closed-form bound on Γ_d
+  double gamma_cap{0.0};         ///< the cap k_p(2 − ε_Γ) of Γ
   double gamma_g_initial{0.0};   ///< Γ_g(R_g(0)) (+∞ without cones)
   double gamma_initial{0.0};     ///< Γ(R_g(0))
   double V_initial{0.0};         ///< V(R_0, ω_0, R_g(0))

@@ -36,9 +36,9 @@ std::vector<ConeConstraint> paper_cones() {
 const Mat3 kRd = attiguard::lie::exp(Vec3(0.0, std::numbers::pi / 2, 0.0));
 
 /// The paper's Sec. V scenario as a PetErgScenario (same values as examples/pet_erg_paper.toml).
-attiguard::scenario::PetErgScenario paper_scenario(GovernorMode mode, double step,
+attiguard::sim::PetErgScenario paper_scenario(GovernorMode mode, double step,
                                                    attiguard::integrate::Method method) {
-  attiguard::scenario::PetErgScenario sc;
+  attiguard::sim::PetErgScenario sc;
   sc.name = "bench";
   sc.params = paper_params(mode);
   sc.cones = paper_cones();

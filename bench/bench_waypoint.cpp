@@ -13,7 +13,7 @@ namespace {
 
 using namespace attiguard;
 
-scenario::WaypointScenario load(const char* name) {
+sim::WaypointScenario load(const char* name) {
   // The benchmark runs from the build tree; the examples live in the source tree.
   const std::string here = __FILE__;
   const std::string root = here.substr(0, here.rfind("/bench/"));
@@ -21,7 +21,7 @@ scenario::WaypointScenario load(const char* name) {
 }
 
 void BM_WaypointMissionPaper(benchmark::State& state) {
-  const scenario::WaypointScenario sc = load("waypoint_paper.toml");
+  const sim::WaypointScenario sc = load("waypoint_paper.toml");
   long steps = 0;
   for (auto _ : state) {
     const sim::WaypointSimResult r = sim::simulate_waypoint(sc);
@@ -33,7 +33,7 @@ void BM_WaypointMissionPaper(benchmark::State& state) {
 BENCHMARK(BM_WaypointMissionPaper)->Unit(benchmark::kMillisecond);
 
 void BM_WaypointMissionFine(benchmark::State& state) {
-  const scenario::WaypointScenario sc = load("waypoint_fine.toml");
+  const sim::WaypointScenario sc = load("waypoint_fine.toml");
   for (auto _ : state) {
     const sim::WaypointSimResult r = sim::simulate_waypoint(sc);
     benchmark::DoNotOptimize(r.total_time);

@@ -10,22 +10,22 @@
 #include <cstdint>
 #include <string_view>
 
-#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/app/kinds.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/kinds.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const attiguard::scenario::Document doc =
         attiguard::scenario::parse_document(text, "fuzz.toml");
-    if (doc.root.contains("dispersions")) {
-      (void)attiguard::campaign::read_dispersions(doc);
-      const auto nominal = attiguard::campaign::nominal_document(doc);
-      attiguard::scenario::handler_for(nominal).check(nominal);
+    if (doc.has_top_level("dispersions")) {
+      (void)attiguard::scenario::read_dispersions(doc);
+      const auto nominal = attiguard::scenario::nominal_document(doc);
+      attiguard::app::handler_for(nominal).check(nominal);
     } else {
-      attiguard::scenario::handler_for(doc).check(doc);
+      attiguard::app::handler_for(doc).check(doc);
     }
   } catch (const attiguard::Error&) {
     // invalid input, reported with a located message: expected

@@ -28,12 +28,14 @@ using governor::GovernorParams;
 using lie::Mat3;
 using lie::Vec3;
 
+/// The mode named `name` in governor::kGovernorModeNames (the scenario files' names).
 GovernorMode mode_of(const std::string& name) {
-  if (name == "pet") return GovernorMode::pet;
-  if (name == "continuous") return GovernorMode::continuous;
-  if (name == "none") return GovernorMode::none;
-  throw std::invalid_argument("governor mode must be \"pet\", \"continuous\" or \"none\", got \"" +
-                              name + "\"");
+  if (const auto mode = governor::kGovernorModeNames.find(name)) return *mode;
+  std::string known;
+  for (const std::string_view n : governor::kGovernorModeNames.names()) {
+    known += (known.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+  }
+  throw std::invalid_argument("governor mode must be one of " + known + ", got \"" + name + "\"");
 }
 
 /// Governor built from keyword arguments (the keys of a pet_erg scenario's [control]/[erg]).

@@ -11,7 +11,8 @@ namespace attiguard::python {
 void bind_errors(pybind11::module_& m);
 /// SO(3) and quaternion helpers (conventions: hat, exp, log, φ, d; waypoint paper eqs. (1), (12)).
 void bind_lie(pybind11::module_& m);
-/// Scenario runs: `attiguard run` / `check` / `reach` on a file or on TOML text.
+/// Scenario runs: `attiguard run` / `check` / `reach` on a scenario file or a dict; run() fills
+/// numpy arrays through a row sink (bind_run.cpp).
 void bind_run(pybind11::module_& m);
 /// PET-ERG governor (PET-ERG paper eqs. (3)-(6)), PD law (3) and the rigid body.
 void bind_governor(pybind11::module_& m);

@@ -84,6 +84,21 @@ def test_run_path_matches_dict(tmp_path):
     np.testing.assert_array_equal(a["tau_norm"], b["tau_norm"])
 
 
+def test_run_without_out_writes_no_file(monkeypatch):
+    # run() fills the numpy arrays directly: no temporary directory, no CSV to read back.
+    import tempfile
+
+    def no_temporary_files(*args, **kwargs):
+        raise AssertionError("run() created a temporary file or directory")
+
+    for name in ("mkdtemp", "mkstemp", "TemporaryDirectory", "NamedTemporaryFile"):
+        monkeypatch.setattr(tempfile, name, no_temporary_files)
+    res = ag.run(short_pet_erg(2.0))
+    assert res.out_dir is None
+    assert res["t"][-1] == pytest.approx(2.0)
+    assert res.summary["output_rows"] == len(res["t"])
+
+
 def test_check_returns_kind():
     assert ag.check(EXAMPLES / "waypoint_paper.toml") == "waypoint"
     assert ag.check(load("rigid_body_pd.toml")) == "rigid_body"

@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 
 #include "attiguard/core/version.hpp"
-#include "attiguard/scenario/kinds.hpp"
+#include "attiguard/app/kinds.hpp"
 
 namespace fs = std::filesystem;
 
@@ -89,8 +89,8 @@ TEST(CliContract, VersionPrintsTheProjectVersion) {
 TEST(CliContract, HelpListsEveryScenarioKind) {
   const auto r = run_cli(scratch_dir(), "--help");
   EXPECT_EQ(r.exit_code, 0);
-  ASSERT_FALSE(attiguard::scenario::kinds().empty());
-  for (const auto& kind : attiguard::scenario::kinds()) {
+  ASSERT_FALSE(attiguard::app::kinds().empty());
+  for (const auto& kind : attiguard::app::kinds()) {
     EXPECT_NE(r.out.find(std::string(kind.name)), std::string::npos) << kind.name;
     EXPECT_NE(r.out.find(std::string(kind.description)), std::string::npos) << kind.name;
   }
@@ -135,7 +135,7 @@ TEST(CliContract, UnknownKindListsTheKnownOnes) {
   EXPECT_EQ(r.exit_code, 2);
   expect_one_error_line(r);
   EXPECT_NE(r.err.find("no_such_kind"), std::string::npos);
-  for (const auto& kind : attiguard::scenario::kinds()) {
+  for (const auto& kind : attiguard::app::kinds()) {
     EXPECT_NE(r.err.find(std::string(kind.name)), std::string::npos) << r.err;
   }
 }

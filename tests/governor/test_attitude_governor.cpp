@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/governor/continuous_erg.hpp"
 #include "attiguard/governor/pet_erg.hpp"
@@ -105,20 +106,34 @@ TEST(ReferenceSchedule, HoldAndGeodesicInterpolation) {
   EXPECT_NEAR(lie::distance(A, mid), 0.5 * lie::distance(A, B), 1e-12);
   EXPECT_NEAR(lie::distance(mid, B), 0.5 * lie::distance(A, B), 1e-12);
   EXPECT_THROW(ReferenceSchedule(std::vector<Waypoint>{{1.0, A}, {1.0, B}}, Interpolation::hold),
-               std::invalid_argument);
+               SetupError);
 }
 
 TEST(AttitudeGovernor, RejectsInvalidParameters) {
   GovernorParams p = paper_params();
   p.c_gamma = 1.0;
   const std::vector<ConeConstraint> cones{paper_cone()};
-  EXPECT_THROW(AttitudeGovernor(p, cones), std::invalid_argument);
+  EXPECT_THROW(AttitudeGovernor(p, cones), SetupError);
   p = paper_params();
   p.epsilon_gamma = 2.0;
-  EXPECT_THROW(AttitudeGovernor(p, cones), std::invalid_argument);
+  EXPECT_THROW(AttitudeGovernor(p, cones), SetupError);
   p = paper_params();
   const std::vector<ConeConstraint> too_many(kMaxCones + 1, paper_cone());
-  EXPECT_THROW(AttitudeGovernor(p, too_many), std::invalid_argument);
+  EXPECT_THROW(AttitudeGovernor(p, too_many), SetupError);
+}
+
+// Set-up errors are of the library's error family: an InputError that maps to exit code 2
+// (docs/architecture.md, "Errors"), never a bare std::invalid_argument ("internal error").
+TEST(AttitudeGovernor, SetupErrorsAreInputErrorsWithExitCodeTwo) {
+  GovernorParams p = paper_params();
+  p.gains.kp = -1.0;
+  try {
+    (void)AttitudeGovernor(p, std::vector<ConeConstraint>{paper_cone()});
+    FAIL() << "a negative kp was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), ExitCode::invalid_input);
+    EXPECT_NE(std::string(e.what()).find("kp"), std::string::npos) << e.what();
+  }
 }
 
 TEST(AttitudeGovernor, EvaluateExposesEveryQuantity) {

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "attiguard/control/pd_so3.hpp"
+#include "attiguard/core/errors.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "test_support.hpp"
 
@@ -146,9 +147,9 @@ TEST(TorqueThreshold, NoSampledBoundaryStateOfSO3xR3LiesBelowGammaD) {
 }
 
 TEST(TorqueThreshold, RejectsInvalidInputs) {
-  EXPECT_THROW((void)compute_torque_threshold({0.0, 1.0, 1.0, 1.0}), std::invalid_argument);
-  EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, -1.0, 1.0}), std::invalid_argument);
-  EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, 1.0, std::nan("")}), std::invalid_argument);
+  EXPECT_THROW((void)compute_torque_threshold({0.0, 1.0, 1.0, 1.0}), SetupError);
+  EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, -1.0, 1.0}), SetupError);
+  EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, 1.0, std::nan("")}), SetupError);
 }
 
 }  // namespace

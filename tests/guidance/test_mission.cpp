@@ -14,8 +14,8 @@ namespace {
 
 using lie::Quat;
 
-scenario::WaypointScenario short_leg_scenario() {
-  scenario::WaypointScenario sc;
+sim::WaypointScenario short_leg_scenario() {
+  sim::WaypointScenario sc;
   sc.name = "leg";
   sc.mission.pointing_tolerance = 1e-4;
   sc.mission.pointing_thrust_axis = true;
@@ -47,7 +47,7 @@ struct FdStats {
 /// Runs the scenario and compares, at every guided sample, the feed-forward rates of the error
 /// frame, the velocity frame and the composite (24) with central differences of the frames along
 /// the trajectory (p ± h v + h² a/2, v ± h a with the acceleration the held commands produce).
-FdStats check_feedforward(const scenario::WaypointScenario& sc, bool antiparallel) {
+FdStats check_feedforward(const sim::WaypointScenario& sc, bool antiparallel) {
   FdStats st;
   const double h = 1e-4;
   auto observer = [&](double, const dynamics::SpacecraftState& y, const MissionCommand& cmd) {
@@ -81,7 +81,7 @@ FdStats check_feedforward(const scenario::WaypointScenario& sc, bool antiparalle
 }
 
 TEST(MissionFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDrift) {
-  scenario::WaypointScenario sc = short_leg_scenario();
+  sim::WaypointScenario sc = short_leg_scenario();
   sc.v0_i = Vec3(0.0, 1.5, -1.0);  // lateral drift: the error direction turns during the leg
   sc.waypoints_i = {Vec3(3000.0, 0.0, 0.0)};
   const FdStats st = check_feedforward(sc, false);
@@ -94,7 +94,7 @@ TEST(MissionFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDr
 TEST(MissionFeedForward, MatchesFiniteDifferencesOnALegAntiparallelToTheBodyAxis) {
   // The waypoint lies along −x_b and −x_i: the paper's chart (inertial x) has ϑ = π exactly
   // (k of (11) undefined); the reversed vector of the deceleration is again antiparallel.
-  scenario::WaypointScenario sc = short_leg_scenario();
+  sim::WaypointScenario sc = short_leg_scenario();
   sc.v0_i = Vec3(0.0, 0.3, 0.2);
   sc.waypoints_i = {Vec3(-3000.0, 0.0, 0.0)};
   const FdStats st = check_feedforward(sc, true);
@@ -105,7 +105,7 @@ TEST(MissionFeedForward, MatchesFiniteDifferencesOnALegAntiparallelToTheBodyAxis
 }
 
 TEST(MissionStateMachine, EveryLegRunsTheModesInOrder) {
-  scenario::WaypointScenario sc = short_leg_scenario();
+  sim::WaypointScenario sc = short_leg_scenario();
   sc.waypoints_i = {Vec3(2000.0, 0.0, 0.0), Vec3(2000.0, 2000.0, 0.0)};
   sc.duration = 2000.0;
   const sim::WaypointSimResult res = sim::simulate_waypoint(sc);
@@ -128,7 +128,7 @@ TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
   int completed = 0;
   long brake_samples = 0;
   for (int trial = 0; trial < 1000; ++trial) {
-    scenario::WaypointScenario sc;
+    sim::WaypointScenario sc;
     sc.name = "sweep";
     sc.R0_ib = test::random_rotation();
     sc.omega0_b = test::random_vector_in_ball(1.0);

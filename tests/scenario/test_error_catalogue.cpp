@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/kinds.hpp"
+#include "attiguard/app/kinds.hpp"
 
 namespace attiguard::scenario {
 namespace {
@@ -52,13 +52,13 @@ std::string error_of(const std::string& relative) {
   const std::string text = slurp(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / relative);
   try {
     const Document doc = parse_document(text, relative);
-    if (doc.root.contains("dispersions")) {  // as attiguard campaign (campaign/runner.cpp)
-      const Document nominal = campaign::nominal_document(doc);
-      const KindHandler& h = handler_for(nominal);
-      (void)campaign::read_dispersions(doc);
+    if (doc.has_top_level("dispersions")) {  // as attiguard campaign (app/campaign_runner.cpp)
+      const Document nominal = nominal_document(doc);
+      const app::KindHandler& h = app::handler_for(nominal);
+      (void)read_dispersions(doc);
       h.check(nominal);
     } else {  // as attiguard check
-      handler_for(doc).check(doc);
+      app::handler_for(doc).check(doc);
     }
   } catch (const InputError& e) {
     return e.what();

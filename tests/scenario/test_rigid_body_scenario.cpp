@@ -41,12 +41,12 @@ std::string error_of(const std::map<int, std::string>& replacements) {
 }
 
 TEST(RigidBodyScenario, ParsesAValidPdScenario) {
-  const RigidBodyScenario sc = parse_rigid_body(parse_document(kPd, "dir/slew.toml"));
+  const sim::RigidBodyScenario sc = parse_rigid_body(parse_document(kPd, "dir/slew.toml"));
   EXPECT_EQ(sc.name, "slew");
   EXPECT_EQ(sc.J, Eigen::Vector3d(1, 2, 3).asDiagonal().toDenseMatrix());
   EXPECT_LT((sc.R0_ib - lie::Mat3::Identity()).norm(), 1e-15);
   EXPECT_EQ(sc.omega0_b, lie::Vec3(0.2, 0.3, 0.4));
-  EXPECT_EQ(sc.law, TorqueLaw::pd);
+  EXPECT_EQ(sc.law, sim::TorqueLaw::pd);
   EXPECT_EQ(sc.kp, 5.0);
   EXPECT_EQ(sc.kd, 1.0);
   EXPECT_LT((sc.R_ref_ib * lie::Vec3::UnitX() - lie::Vec3(0, 0, -1)).norm(), 1e-15);
@@ -57,7 +57,7 @@ TEST(RigidBodyScenario, ParsesAValidPdScenario) {
 }
 
 TEST(RigidBodyScenario, OptionalKeysTakeTheirDocumentedDefaults) {
-  const RigidBodyScenario sc = parse_rigid_body(parse_document(R"(kind = "rigid_body"
+  const sim::RigidBodyScenario sc = parse_rigid_body(parse_document(R"(kind = "rigid_body"
 [body]
 inertia = [[2, 0, 0], [0, 2, 0], [0, 0, 3]]
 [control]
@@ -70,7 +70,7 @@ duration = 1
   EXPECT_EQ(sc.name, "tumble");
   EXPECT_EQ(sc.R0_ib, lie::Mat3::Identity());
   EXPECT_EQ(sc.omega0_b, lie::Vec3::Zero());
-  EXPECT_EQ(sc.law, TorqueLaw::free);
+  EXPECT_EQ(sc.law, sim::TorqueLaw::free);
   EXPECT_EQ(sc.duration, 1.0);
   EXPECT_EQ(sc.output_interval, 0.01);
   EXPECT_EQ(sc.integrator.method, integrate::Method::rkmk4);
@@ -83,7 +83,7 @@ duration = 1
 }
 
 TEST(RigidBodyScenario, ConstantTorqueAndAdaptiveIntegrator) {
-  const RigidBodyScenario sc = parse_rigid_body(parse_document(
+  const sim::RigidBodyScenario sc = parse_rigid_body(parse_document(
       with_lines(
           kPd,
           {{1, "kind = \"rigid_body\"\nname = \"spin-up\"\ndescription = \"constant torque\""},
@@ -94,7 +94,7 @@ TEST(RigidBodyScenario, ConstantTorqueAndAdaptiveIntegrator) {
            {15, "integrator = \"rkmk_dp54\"\nabs_tol = 1e-8\nrel_tol = 1e-7\nmax_step = 0.5"}}),
       "x.toml"));
   EXPECT_EQ(sc.name, "spin-up");
-  EXPECT_EQ(sc.law, TorqueLaw::constant_torque);
+  EXPECT_EQ(sc.law, sim::TorqueLaw::constant_torque);
   EXPECT_EQ(sc.torque_b, lie::Vec3(0, 0, 0.1));
   EXPECT_EQ(sc.integrator.method, integrate::Method::rkmk_dp54);
   EXPECT_EQ(sc.integrator.abs_tol, 1e-8);
@@ -249,11 +249,11 @@ TEST(RigidBodyScenario, IntegratorNameTypoIsSuggested) {
 const std::filesystem::path kExamples = std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "examples";
 
 TEST(ScenarioExamples, PdSlewExampleMatchesTheIssue) {
-  const RigidBodyScenario sc = parse_rigid_body(load_document(kExamples / "rigid_body_pd.toml"));
+  const sim::RigidBodyScenario sc = parse_rigid_body(load_document(kExamples / "rigid_body_pd.toml"));
   EXPECT_EQ(sc.J, Eigen::Vector3d(1, 2, 3).asDiagonal().toDenseMatrix());
   EXPECT_EQ(sc.R0_ib, lie::Mat3::Identity());
   EXPECT_EQ(sc.omega0_b, lie::Vec3(0.2, 0.3, 0.4));
-  EXPECT_EQ(sc.law, TorqueLaw::pd);
+  EXPECT_EQ(sc.law, sim::TorqueLaw::pd);
   EXPECT_EQ(sc.kp, 5.0);
   EXPECT_EQ(sc.kd, 1.0);
   EXPECT_LT((sc.R_ref_ib - lie::exp(lie::Vec3(0, std::numbers::pi / 2, 0))).norm(), 1e-15);
@@ -264,8 +264,8 @@ TEST(ScenarioExamples, PdSlewExampleMatchesTheIssue) {
 }
 
 TEST(ScenarioExamples, FreeTumblingExampleUsesDormandPrince) {
-  const RigidBodyScenario sc = parse_rigid_body(load_document(kExamples / "rigid_body_free.toml"));
-  EXPECT_EQ(sc.law, TorqueLaw::free);
+  const sim::RigidBodyScenario sc = parse_rigid_body(load_document(kExamples / "rigid_body_free.toml"));
+  EXPECT_EQ(sc.law, sim::TorqueLaw::free);
   EXPECT_EQ(sc.integrator.method, integrate::Method::rkmk_dp54);
   EXPECT_GT(sc.duration, 0.0);
 }

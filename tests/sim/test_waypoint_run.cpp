@@ -18,12 +18,12 @@
 namespace attiguard::sim {
 namespace {
 
-scenario::WaypointScenario load(const std::string& file) {
+sim::WaypointScenario load(const std::string& file) {
   return scenario::parse_waypoint(scenario::load_document(std::string(ATTIGUARD_SOURCE_DIR) + "/" + file));
 }
 
 TEST(WaypointRun, PaperScenarioVisitsTheWaypointsInOrder) {
-  const scenario::WaypointScenario sc = load("examples/waypoint_paper.toml");
+  const sim::WaypointScenario sc = load("examples/waypoint_paper.toml");
   const WaypointSimResult res = simulate_waypoint(sc);
   ASSERT_TRUE(res.completed);
   ASSERT_TRUE(res.finite);
@@ -44,7 +44,7 @@ TEST(WaypointRun, PaperScenarioVisitsTheWaypointsInOrder) {
 }
 
 TEST(WaypointRun, FinePositionControlReachesEveryWaypoint) {
-  const scenario::WaypointScenario sc = load("examples/waypoint_fine.toml");
+  const sim::WaypointScenario sc = load("examples/waypoint_fine.toml");
   ASSERT_GT(sc.mission.rct.kappa_p, 0.0);
   const WaypointSimResult res = simulate_waypoint(sc);
   ASSERT_TRUE(res.completed);
@@ -91,7 +91,7 @@ TEST(WaypointRun, OneDegreeEngineMisalignmentStillReachesEveryWaypoint) {
        << 0.8 * std::sin(tilt) << "]\nmax_wheel_torque = 5.0";
   const std::string text = fine_doc_with(
       {{"max_wheel_torque = 5.0", axis.str()}, {"duration = 6000.0", "duration = 15000.0"}});
-  const scenario::WaypointScenario sc =
+  const sim::WaypointScenario sc =
       scenario::parse_waypoint(scenario::parse_document(text, "tilted.toml"));
   ASSERT_GT(sc.mission.brake_speed, 0.0);
   const WaypointSimResult res = simulate_waypoint(sc);
@@ -109,7 +109,7 @@ TEST(WaypointRun, OneDegreeEngineMisalignmentStillReachesEveryWaypoint) {
               res.total_time, delta_v, res.transitions.size());
 
   // The same engine with the brake mode off (Algorithm 1 as printed): the mission fails.
-  const scenario::WaypointScenario printed = scenario::parse_waypoint(scenario::parse_document(
+  const sim::WaypointScenario printed = scenario::parse_waypoint(scenario::parse_document(
       fine_doc_with({{"max_wheel_torque = 5.0", axis.str()},
                      {"duration = 6000.0", "duration = 15000.0"},
                      {"replan_distance = 50.0", "replan_distance = 50.0\nbrake_speed = 0.0"}}),
@@ -163,7 +163,7 @@ TEST(WaypointScenario, RejectsUnreachableWaypointsAndBadParameters) {
 }
 
 TEST(WaypointScenario, AnExplicitBodyXEngineAxisIsThePaperPlant) {
-  const scenario::WaypointScenario sc = scenario::parse_waypoint(scenario::parse_document(
+  const sim::WaypointScenario sc = scenario::parse_waypoint(scenario::parse_document(
       doc_with("main_thrust = 20.0", "main_thrust = 20.0\nmain_thrust_axis_b = [2.0, 0.0, 0.0]"),
       "axis.toml"));
   EXPECT_EQ(sc.main_thrust_axis_b, lie::Vec3::UnitX());  // normalised

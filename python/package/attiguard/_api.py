@@ -1,9 +1,10 @@
 """attiguard.run / check / reach: the `attiguard run`, `check` and `reach` commands from Python.
 
-A scenario is a TOML file path (str or pathlib.Path) or a dict with the same structure as the
-file (docs/scenario-format.md); a dict is written as TOML text (attiguard._toml.dumps) and
-parsed by the same C++ reader as a file, so errors carry the same messages, with "<dict>" in
-place of the file name.
+A scenario is a scenario file path (str or pathlib.Path) or a dict with the same structure as
+the file (docs/scenario-format.md); a dict is handed to the C++ core value by value (no text,
+no temporary file) and validated by the same readers as a file, so errors carry the same
+messages, with "<dict>" in place of the file name. run() receives the time series straight into
+numpy arrays (a row sink of the bindings); files are written only when `out` is given.
 """
 
 from __future__ import annotations
@@ -16,21 +17,17 @@ from pathlib import Path
 from typing import Any, Mapping, Union
 
 from . import _core
-from ._results import ReachResult, RunResult, balls_of, load_csv, load_json
-from ._toml import dumps
+from ._results import ReachResult, RunResult, balls_of, load_json
 
 Scenario = Union[str, os.PathLike, Mapping[str, Any]]
 
-DICT_LABEL = "<dict>"
-
-
-def _source(scenario: Scenario) -> tuple[str, bool, str]:
-    """(source, is_text, label) for the C++ side."""
+def _source(scenario: Scenario) -> Union[str, Mapping[str, Any]]:
+    """The scenario for the C++ side: a path as str, or the dict itself."""
     if isinstance(scenario, Mapping):
-        return dumps(scenario), True, DICT_LABEL
+        return scenario
     if isinstance(scenario, (str, os.PathLike)):
-        return os.fspath(scenario), False, os.fspath(scenario)
-    raise TypeError(f"scenario must be a TOML file path or a dict, got {type(scenario).__name__}")
+        return os.fspath(scenario)
+    raise TypeError(f"scenario must be a scenario file path or a dict, got {type(scenario).__name__}")
 
 
 class _OutDir:
@@ -52,23 +49,23 @@ class _OutDir:
 def check(scenario: Scenario) -> str:
     """Parses and validates a scenario like `attiguard check`; returns its kind.
     Raises attiguard.InputError with the CLI's message when it is invalid."""
-    source, is_text, label = _source(scenario)
-    return _core._check(source, is_text, label)
+    return _core._check(_source(scenario))
 
 
 def run(scenario: Scenario, out: str | os.PathLike | None = None) -> RunResult:
     """Runs a scenario like `attiguard run SCENARIO --out OUT` and returns a RunResult: the time
-    series of trajectory.csv as numpy arrays (result.series, result["t"]) and summary.json as a
-    dict (result.summary). Without `out` the files go to a temporary directory that is removed.
-    Raises InputError (exit code 2), NumericalError (3) or VerificationFailure (4)."""
-    source, is_text, label = _source(scenario)
-    with _OutDir(out) as d:
-        kind, summary_text = _core._run(source, is_text, label, str(d.path))
-        summary = json.loads(summary_text)
-        csv = d.path / "trajectory.csv"
-        series = load_csv(csv) if csv.is_file() else {}
-        return RunResult(kind=kind, summary=summary, series=series,
-                         out_dir=d.path if d.keep else None)
+    series (the columns of trajectory.csv) as numpy arrays (result.series, result["t"]) and the
+    summary as a dict (result.summary). The arrays are filled by the simulator directly; with
+    `out` the run also writes OUT/trajectory.csv and OUT/summary.json, without it nothing is
+    written. Raises InputError (exit code 2), NumericalError (3) or VerificationFailure (4)."""
+    out_dir = None
+    if out is not None:
+        out_dir = Path(out)
+        out_dir.mkdir(parents=True, exist_ok=True)
+    kind, summary_text, series = _core._run(_source(scenario),
+                                            None if out_dir is None else str(out_dir))
+    return RunResult(kind=kind, summary=json.loads(summary_text), series=dict(series),
+                     out_dir=out_dir)
 
 
 def reach(scenario: Scenario, out: str | os.PathLike | None = None,
@@ -78,10 +75,10 @@ def reach(scenario: Scenario, out: str | os.PathLike | None = None,
     radius r, the contraction rate c, the attitude radius, ...). When safety is requested and not
     proved, raises VerificationFailure (the CLI's exit code 4) unless raise_on_failure=False,
     in which case the result (verdict "unsafe" or "unknown") is returned."""
-    source, is_text, label = _source(scenario)
+    source = _source(scenario)
     with _OutDir(out) as d:
         try:
-            summary = json.loads(_core._reach(source, is_text, label, str(d.path)))
+            summary = json.loads(_core._reach(source, str(d.path)))
         except _core.VerificationFailure:
             written = d.path / "reach.json"
             if raise_on_failure or not written.is_file():

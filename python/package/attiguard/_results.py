@@ -1,4 +1,4 @@
-"""Loading a run's outputs (trajectory.csv, summary.json, reach.json) into numpy and dicts."""
+"""The results of attiguard.run() and attiguard.reach(): numpy arrays and dicts."""
 
 from __future__ import annotations
 
@@ -8,17 +8,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-
-def load_csv(path: Path) -> dict[str, np.ndarray]:
-    """Columns of a CSV with a header row (docs/conventions.md, "Outputs") as float arrays."""
-    path = Path(path)
-    with path.open() as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    if data.size == 0:
-        data = np.zeros((0, len(header)))
-    return {name: data[:, i].copy() for i, name in enumerate(header)}
 
 
 @dataclass

@@ -1,8 +1,9 @@
 """A dict -> TOML text writer for scenario dicts (the inverse of tomllib.loads for the values
 scenarios use): tables, arrays of tables, strings, booleans, ints, floats, arrays.
 
-attiguard.run(dict) converts the dict with dumps() and hands the text to the same C++ parser
-as `attiguard run FILE`, so a dict scenario is validated exactly like a file.
+attiguard.to_toml(dict) writes a dict scenario as a scenario file's text (to save it, or to run
+it with the CLI); attiguard.run(dict) does not go through it: the dict goes to the C++ core value
+by value.
 """
 
 from __future__ import annotations

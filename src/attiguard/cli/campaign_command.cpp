@@ -19,7 +19,7 @@
 #include "attiguard/campaign/csv_format.hpp"
 #include "attiguard/campaign/row_gather.hpp"
 #include "attiguard/campaign/progress.hpp"
-#include "attiguard/campaign/runner.hpp"
+#include "attiguard/app/campaign_runner.hpp"
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
@@ -47,18 +47,18 @@ void make_dir(const std::filesystem::path& dir) {
 }
 
 /// `--replay K`: run K again with its full trajectory in DIR/run_K.
-void replay(const campaign::Campaign& c, const CampaignArguments& args) {
+void replay(const app::Campaign& c, const CampaignArguments& args) {
   const long k = *args.replay;
   const std::filesystem::path dir = args.out_dir / ("run_" + std::to_string(k));
   make_dir(dir);
-  scenario::RunOptions options;
+  app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
-  const campaign::RunRecord r = campaign::run_one(c, k, options);
-  const std::string header = join(campaign::csv_columns(c));
-  const std::string row = campaign::csv_row(c, r);
+  const app::RunRecord r = app::run_one(c, k, options);
+  const std::string header = join(app::csv_columns(c));
+  const std::string row = app::csv_row(c, r);
   std::ofstream(dir / "run.csv", std::ios::binary) << header << '\n' << row << '\n';
-  std::cout << "Replayed run " << k << " (seed " << r.seed << "): " << campaign::status_name(r.status)
+  std::cout << "Replayed run " << k << " (seed " << r.seed << "): " << app::status_name(r.status)
             << (r.reason.empty() ? "" : " (" + r.reason + ")") << '\n';
   const auto existing = campaign::read_runs(args.out_dir / "runs.csv", header);
   if (const auto it = existing.find(k); it != existing.end()) {
@@ -69,7 +69,7 @@ void replay(const campaign::Campaign& c, const CampaignArguments& args) {
   for (const char* f : {"trajectory.csv", "summary.json"}) {
     if (std::filesystem::exists(dir / f)) std::cout << "  " << (dir / f).string() << '\n';
   }
-  if (args.plot && r.status == campaign::RunStatus::ok) {
+  if (args.plot && r.status == app::RunStatus::ok) {
     const PlotOutcome p = plot_results(std::string(c.handler->name), dir);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
   }
@@ -85,13 +85,13 @@ void campaign_command(const CampaignArguments& args) {
   make_dir(args.out_dir);
   const std::filesystem::path scratch =
       args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));
-  const campaign::Campaign c = campaign::load_campaign(args.scenario, args.seed, scratch);
+  const app::Campaign c = app::load_campaign(args.scenario, args.seed, scratch);
   if (args.replay) {
     if (world.root()) replay(c, args);
     return;
   }
 
-  const std::string header = join(campaign::csv_columns(c));
+  const std::string header = join(app::csv_columns(c));
   const std::filesystem::path runs_path = args.out_dir / "runs.csv";
   std::map<long, std::string> done;
   if (args.resume) {
@@ -124,8 +124,8 @@ void campaign_command(const CampaignArguments& args) {
   campaign::Progress progress(std::cout, static_cast<long>(share.size()),
                               world.root() && ::isatty(STDOUT_FILENO) == 1);
   std::map<long, std::string> mine;
-  campaign::run_many(c, share, args.threads, scratch, g_stop, [&](const campaign::RunRecord& r) {
-    std::string row = campaign::csv_row(c, r);
+  app::run_many(c, share, args.threads, scratch, g_stop, [&](const app::RunRecord& r) {
+    std::string row = app::csv_row(c, r);
     if (appender) appender->append(row);
     mine.emplace(r.index, std::move(row));
     if (world.root()) progress.tick();

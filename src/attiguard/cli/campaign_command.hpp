@@ -1,6 +1,6 @@
 #pragma once
 /// @file campaign_command.hpp
-/// `attiguard campaign SCENARIO.toml --runs N --seed S --out DIR [--threads T] [--replay K]
+/// `attiguard campaign SCENARIO --runs N --seed S --out DIR [--threads T] [--replay K]
 /// [--resume] [--plot]` (docs/campaigns.md).
 
 #include <cstdint>

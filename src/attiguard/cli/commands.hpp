@@ -15,17 +15,17 @@ namespace attiguard::cli {
 
 /// Arguments of `attiguard run`.
 struct RunArguments {
-  std::filesystem::path scenario;  ///< SCENARIO.toml
+  std::filesystem::path scenario;  ///< SCENARIO
   std::filesystem::path out_dir;   ///< --out DIR
   bool plot{false};                ///< --plot
 };
 
-/// `attiguard run SCENARIO.toml --out DIR [--plot]`: runs the scenario, writes
+/// `attiguard run SCENARIO --out DIR [--plot]`: runs the scenario, writes
 /// DIR/trajectory.csv and DIR/summary.json (and the plots with --plot), prints a short summary
 /// and the paths written.
 void run_command(const RunArguments& args);
 
-/// `attiguard check SCENARIO.toml`: parses and validates the scenario without running it and
+/// `attiguard check SCENARIO`: parses and validates the scenario without running it and
 /// prints `OK: <file> (<kind>)`.
 void check_command(const std::filesystem::path& scenario);
 

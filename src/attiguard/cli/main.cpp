@@ -2,12 +2,14 @@
 /// The `attiguard` program: argument parsing (CLI11) and the mapping of failures to exit codes.
 ///
 /// Exit codes (docs/conventions.md): 0 success; 2 invalid input, including bad command-line
-/// arguments; 3 numerical failure, and any unexpected internal error; 4 a requested safety
-/// verification failed. Every non-zero exit prints exactly one line on stderr:
+/// arguments, set-up errors of the library and a scenario too large for the memory; 3 numerical
+/// failure, and any unexpected internal error; 4 a requested safety verification failed. Every non-zero exit prints exactly one line on stderr:
 ///   attiguard: error: <message>
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 #include <iostream>
 #include <string>
 
@@ -18,7 +20,8 @@
 #include "attiguard/cli/reach_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/version.hpp"
-#include "attiguard/scenario/kinds.hpp"
+#include "attiguard/app/failure.hpp"
+#include "attiguard/app/kinds.hpp"
 
 namespace {
 
@@ -46,9 +49,9 @@ int fail(ExitCode code, std::string message) {
 /// The footer of `attiguard --help`: every scenario kind with its description.
 std::string kinds_help() {
   std::size_t width = 0;
-  for (const auto& k : attiguard::scenario::kinds()) width = std::max(width, k.name.size());
-  std::string text = "Scenario kinds (the top-level `kind` key of SCENARIO.toml):\n";
-  for (const auto& k : attiguard::scenario::kinds()) {
+  for (const auto& k : attiguard::app::kinds()) width = std::max(width, k.name.size());
+  std::string text = "Scenario kinds (the top-level `kind` key of the scenario file):\n";
+  for (const auto& k : attiguard::app::kinds()) {
     text += "  " + std::string(k.name) + std::string(width - k.name.size() + 2, ' ') +
             std::string(k.description) + "\n";
   }
@@ -56,6 +59,19 @@ std::string kinds_help() {
       "\nExit codes: 0 success, 2 invalid input, 3 numerical failure, 4 verification failed.\n"
       "Documentation: docs/conventions.md, docs/scenario-format.md.";
   return text;
+}
+
+/// The scenario file named on the command line (the first argument after the subcommand that
+/// is an existing file), for messages about failures that carry no location; "" when none.
+std::string scenario_argument(int argc, char** argv) noexcept {
+  try {
+    for (int i = 2; i < argc; ++i) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(argv[i], ec)) return argv[i];
+    }
+  } catch (...) {
+  }
+  return {};
 }
 
 int run(int argc, char** argv) {
@@ -149,11 +165,11 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
-  } catch (const attiguard::Error& e) {
-    return fail(e.code(), e.what());
-  } catch (const std::exception& e) {
-    return fail(ExitCode::numerical_failure, std::string("internal error: ") + e.what());
   } catch (...) {
-    return fail(ExitCode::numerical_failure, "internal error: unknown exception");
+    // The error family → its exit code; std::bad_alloc / std::length_error → 2 with what was
+    // too large; anything else → 3 "internal error" (app/failure.hpp).
+    const attiguard::app::Failure f =
+        attiguard::app::describe_failure(std::current_exception(), scenario_argument(argc, argv));
+    return fail(f.code, f.message.empty() ? "out of memory" : f.message);
   }
 }

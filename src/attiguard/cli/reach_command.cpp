@@ -1,5 +1,5 @@
 /// @file reach_command.cpp
-/// `attiguard reach SCENARIO.toml --out DIR [--plot]` (docs/reach.md).
+/// `attiguard reach SCENARIO --out DIR [--plot]` (docs/reach.md).
 
 #include "attiguard/cli/reach_command.hpp"
 
@@ -12,7 +12,7 @@
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
-#include "attiguard/reach/reach_run.hpp"
+#include "attiguard/app/reach_run.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 
@@ -20,7 +20,7 @@ namespace attiguard::cli {
 
 void reach_command(const ReachArguments& args) {
   const scenario::Document doc = scenario::load_document(args.scenario);
-  const scenario::ReachScenario sc = scenario::parse_reach(doc);
+  const reach::ReachScenario sc = scenario::parse_reach(doc);
   if (args.out_dir.empty()) throw InputError("--out: the output directory must not be empty");
 
   // Under mpirun the partition cells are split over the ranks (docs/scaling.md); rank 0 prints
@@ -29,7 +29,7 @@ void reach_command(const ReachArguments& args) {
   const parallel::World world = parallel::mpi_world();
   nlohmann::json summary;
   try {
-    summary = reach::run_reach(sc, args.out_dir, world);
+    summary = app::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
     if (args.plot && world.root()) (void)plot_results("reach", args.out_dir);
     throw;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file reach_command.hpp
-/// `attiguard reach SCENARIO.toml --out DIR [--plot]`: ConReach reachability analysis.
+/// `attiguard reach SCENARIO --out DIR [--plot]`: ConReach reachability analysis.
 
 #include <filesystem>
 
@@ -8,7 +8,7 @@ namespace attiguard::cli {
 
 /// Arguments of `attiguard reach`.
 struct ReachArguments {
-  std::filesystem::path scenario;  ///< SCENARIO.toml (kind = "reach")
+  std::filesystem::path scenario;  ///< SCENARIO (kind = "reach")
   std::filesystem::path out_dir;   ///< --out DIR
   bool plot{false};                ///< --plot
 };

@@ -1,5 +1,5 @@
 /// @file run_command.cpp
-/// `attiguard run SCENARIO.toml --out DIR [--plot]`.
+/// `attiguard run SCENARIO --out DIR [--plot]`.
 
 #include <array>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/kinds.hpp"
+#include "attiguard/app/kinds.hpp"
 
 namespace attiguard::cli {
 namespace {
@@ -97,10 +97,10 @@ void print_summary(const nlohmann::json& summary, const std::string& scenario,
 
 void run_command(const RunArguments& args) {
   const scenario::Document doc = scenario::load_document(args.scenario);
-  const scenario::KindHandler& handler = scenario::handler_for(doc);
+  const app::KindHandler& handler = app::handler_for(doc);
   make_output_dir(args.out_dir);
 
-  scenario::RunOptions options;
+  app::RunOptions options;
   options.out_dir = args.out_dir;
   const nlohmann::json summary = handler.run(doc, options);
   print_summary(summary, args.scenario.string(), handler.name);

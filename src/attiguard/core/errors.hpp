@@ -3,7 +3,8 @@
 /// Error types and the CLI exit codes they map to (docs/conventions.md, "Exit codes").
 ///
 /// These are thrown only by set-up, I/O and analysis code; flight-loop code (controllers,
-/// governor, guidance step) never throws.
+/// governor, guidance step) never throws. Every error of the library is one of these (set-up
+/// errors are SetupError, an InputError), so that a program maps each to its exit code.
 
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,15 @@ class Error : public std::runtime_error {
 class InputError : public Error {
  public:
   explicit InputError(const std::string& message) : Error(ExitCode::invalid_input, message) {}
+};
+
+/// A bad set-up parameter given to a library constructor or set-up function (a gain that is not
+/// positive, an impossible cone, an invalid inertia): an InputError without a file location. The
+/// scenario parsers catch it and rethrow it located at the key the value came from
+/// (docs/architecture.md, "Errors"); from a program it maps to exit code 2 like any InputError.
+class SetupError : public InputError {
+ public:
+  explicit SetupError(const std::string& message) : InputError(message) {}
 };
 
 /// Numerical failure: NaN, divergence, solver failure.

@@ -39,7 +39,7 @@ std::optional<std::string> inertia_error(const Mat3& J) {
 
 RigidBody::RigidBody(const Mat3& J) {
   if (auto err = inertia_error(J)) {
-    throw InputError(*err);
+    throw SetupError(*err);
   }
   J_ = 0.5 * (J + J.transpose());
   J_inv_ = J_.inverse();

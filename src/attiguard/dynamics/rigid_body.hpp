@@ -20,7 +20,7 @@ using lie::Vec3;
 /// A rigid body with a validated inertia matrix (body frame, about the centre of mass) [kg·m²].
 class RigidBody {
  public:
-  /// Throws InputError with inertia_error's message when J is not valid.
+  /// Throws SetupError (an InputError) with inertia_error's message when J is not valid.
   explicit RigidBody(const Mat3& J);
 
   [[nodiscard]] const Mat3& inertia() const noexcept { return J_; }

@@ -1,5 +1,7 @@
 #include "attiguard/governor/attitude_governor.hpp"
 
+#include "attiguard/core/errors.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -18,7 +20,7 @@ bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 
 void require(bool ok, const std::string& what) {
   if (!ok) {
-    throw std::invalid_argument("governor: " + what);
+    throw SetupError("governor: " + what);
   }
 }
 
@@ -55,7 +57,7 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
           "at most " + std::to_string(kMaxCones) + " cone constraints");
   for (std::size_t i = 0; i < cones.size(); ++i) {
     if (const auto err = cone_error(cones[i])) {
-      throw std::invalid_argument("governor: cone " + std::to_string(i) + ": " + *err);
+      throw SetupError("governor: cone " + std::to_string(i) + ": " + *err);
     }
     (void)cones_.push_back(cones[i]);
   }

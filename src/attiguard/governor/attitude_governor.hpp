@@ -17,6 +17,7 @@
 #include <span>
 
 #include "attiguard/control/pd_so3.hpp"
+#include "attiguard/core/name_table.hpp"
 #include "attiguard/governor/cone_constraint.hpp"
 #include "attiguard/governor/pet_erg.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
@@ -29,6 +30,11 @@ enum class GovernorMode {
   continuous,  ///< continuous-time ERG, eq. (4) of the PET-ERG paper
   none,        ///< no governor: the PD law (3) tracks R_d directly (constraints not enforced)
 };
+
+/// Names of GovernorMode in scenario files (`governor = "pet"`), summaries and the Python
+/// bindings (docs/scenario-format.md, "pet_erg").
+inline constexpr NameTable<GovernorMode, 3> kGovernorModeNames{
+    {{{GovernorMode::pet, "pet"}, {GovernorMode::continuous, "continuous"}, {GovernorMode::none, "none"}}}};
 
 /// Parameters of the PD law (3) and the governor (PET-ERG paper, Secs. III–V).
 struct GovernorParams {
@@ -65,7 +71,7 @@ struct GovernorOutput {
 class AttitudeGovernor {
  public:
   /// Validates the parameters and cones and computes Γ_d offline (PET-ERG paper, Sec. III-B.1).
-  /// Throws std::invalid_argument with a one-line reason (set-up code only).
+  /// Throws SetupError (core/errors.hpp) with a one-line reason (set-up code only).
   AttitudeGovernor(const GovernorParams& params, std::span<const ConeConstraint> cones);
 
   // ---- pure functions of the state (PET-ERG paper notation), noexcept and allocation-free ----
@@ -120,6 +126,8 @@ class AttitudeGovernor {
   [[nodiscard]] const TorqueThreshold& torque_threshold() const noexcept { return threshold_; }
   /// The loose closed-form bound on Γ_d (docs/pet-erg.md).
   [[nodiscard]] double gamma_d_loose() const noexcept { return gamma_d_loose_; }
+  /// The cap k_p(2 − ε_Γ) of Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1).
+  [[nodiscard]] double gamma_cap() const noexcept { return gamma_cap_; }
 
  private:
   GovernorParams params_;

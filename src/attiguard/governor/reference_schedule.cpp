@@ -1,5 +1,7 @@
 #include "attiguard/governor/reference_schedule.hpp"
 
+#include "attiguard/core/errors.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,18 +17,18 @@ ReferenceSchedule::ReferenceSchedule(std::span<const Waypoint> waypoints,
                                      Interpolation interpolation)
     : interpolation_(interpolation) {
   if (waypoints.empty() || waypoints.size() > static_cast<std::size_t>(kMaxWaypoints)) {
-    throw std::invalid_argument("reference schedule: needs between 1 and " +
+    throw SetupError("reference schedule: needs between 1 and " +
                                 std::to_string(kMaxWaypoints) + " waypoints");
   }
   count_ = static_cast<int>(waypoints.size());
   for (int i = 0; i < count_; ++i) {
     const Waypoint& w = waypoints[static_cast<std::size_t>(i)];
     if (!std::isfinite(w.t) || !lie::is_rotation(w.R_d, 1e-6)) {
-      throw std::invalid_argument("reference schedule: waypoint " + std::to_string(i) +
+      throw SetupError("reference schedule: waypoint " + std::to_string(i) +
                                   " has a non-finite time or is not a rotation");
     }
     if (i > 0 && !(w.t > waypoints[static_cast<std::size_t>(i - 1)].t)) {
-      throw std::invalid_argument("reference schedule: waypoint times must increase strictly");
+      throw SetupError("reference schedule: waypoint times must increase strictly");
     }
     waypoints_[static_cast<std::size_t>(i)] = w;
   }

@@ -8,6 +8,7 @@
 #include <array>
 #include <span>
 
+#include "attiguard/core/name_table.hpp"
 #include "attiguard/lie/so3.hpp"
 
 namespace attiguard::governor {
@@ -24,6 +25,10 @@ enum class Interpolation {
   geodesic,  ///< R_d(t) = R_i exp(s log(R_iᵀR_{i+1})), s = (t − t_i)/(t_{i+1} − t_i)
 };
 
+/// Names of Interpolation in scenario files (`[desired] interpolation`, docs/scenario-format.md).
+inline constexpr NameTable<Interpolation, 2> kInterpolationNames{
+    {{{Interpolation::hold, "hold"}, {Interpolation::geodesic, "geodesic"}}}};
+
 /// One waypoint of a schedule: from time t on, the desired attitude is R_d (body → inertial).
 struct Waypoint {
   double t{0.0};
@@ -37,7 +42,7 @@ class ReferenceSchedule {
   explicit ReferenceSchedule(const Mat3& R_d = Mat3::Identity()) noexcept;
 
   /// Waypoints with strictly increasing times (at most kMaxWaypoints, at least one).
-  /// Throws std::invalid_argument otherwise (set-up code only).
+  /// Throws SetupError (core/errors.hpp) otherwise (set-up code only).
   ReferenceSchedule(std::span<const Waypoint> waypoints, Interpolation interpolation);
 
   /// R_d(t) (PET-ERG paper, Sec. II); allocation-free.

@@ -1,5 +1,7 @@
 #include "attiguard/governor/torque_threshold.hpp"
 
+#include "attiguard/core/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,7 +38,7 @@ double torque_threshold_objective(const TorqueThresholdInputs& in, double theta)
 TorqueThreshold compute_torque_threshold(const TorqueThresholdInputs& in, double tol) {
   if (!positive_finite(in.kp) || !positive_finite(in.kd) || !positive_finite(in.lambda_min) ||
       !positive_finite(in.tau_max) || !positive_finite(tol)) {
-    throw std::invalid_argument(
+    throw SetupError(
         "torque threshold: kp, kd, lambda_min, tau_max and tol must be positive and finite");
   }
   // f is convex on [0, π/2] (f″ = k_p cos θ + 2c (k_p cos θ)² 1[g>0] + 2c g₊ k_p sin θ ≥ 0),

@@ -39,7 +39,7 @@ struct TorqueThreshold {
 /// well inside the required 1e-9, docs/errata.md, PET-ERG 1b). The returned gamma_d is a certified lower bound of
 /// the true minimum (tangent-line bound of the convex f, minus a few rounding units): it never
 /// overestimates, so {V ≤ Γ_d} never allows torque saturation.
-/// Throws std::invalid_argument when an input is not positive and finite (set-up code only).
+/// Throws SetupError (core/errors.hpp) when an input is not positive and finite (set-up code only).
 [[nodiscard]] TorqueThreshold compute_torque_threshold(const TorqueThresholdInputs& in,
                                                        double tol = 1e-12);
 

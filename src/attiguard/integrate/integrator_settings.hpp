@@ -2,6 +2,8 @@
 /// @file integrator_settings.hpp
 /// User-facing choice of integrator and its parameters (scenario table `[simulation]`).
 
+#include "attiguard/core/name_table.hpp"
+
 namespace attiguard::integrate {
 
 /// Which Runge–Kutta–Munthe-Kaas scheme advances a simulation.
@@ -9,6 +11,11 @@ enum class Method {
   rkmk4,      ///< classical RK4 coefficients, fixed step `step` (order 4)
   rkmk_dp54,  ///< Dormand–Prince 5(4) coefficients, adaptive step from abs_tol / rel_tol
 };
+
+/// Names of Method in scenario files (`[simulation] integrator`) and summaries
+/// (docs/scenario-format.md, "Integrator keys").
+inline constexpr NameTable<Method, 2> kMethodNames{
+    {{{Method::rkmk4, "rkmk4"}, {Method::rkmk_dp54, "rkmk_dp54"}}}};
 
 /// Integrator parameters; defaults are sane for spacecraft attitude problems.
 struct IntegratorSettings {

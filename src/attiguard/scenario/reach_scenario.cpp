@@ -8,15 +8,12 @@
 #include <numbers>
 
 #include "attiguard/reach/metrics.hpp"
+#include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
 
 namespace {
-
-void declare(const TableReader& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) (void)table.has(key);
-}
 
 std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, std::string& model) {
   static constexpr std::array<std::string_view, 4> models{"linear_omega", "free", "constant_torque",
@@ -38,17 +35,12 @@ std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, st
 
 }  // namespace
 
-ReachScenario parse_reach(const Document& doc) {
-  ReachScenario sc;
+reach::ReachScenario parse_reach(const Document& doc) {
+  reach::ReachScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "system", "initial", "reach", "partition",
                  "soundness", "safety", "output"});
-  const std::string kind = root.string("kind");
-  if (kind != "reach") root.fail("kind", "expected \"reach\", got \"" + kind + "\"");
-  const std::string stem = doc.path.stem().string();
-  sc.name = root.string_or("name", stem.empty() ? "reach" : stem);
-  if (sc.name.empty()) root.fail("name", "must not be empty");
-  (void)root.string_or("description", "");
+  sc.name = read_header(root, doc, "reach", "reach");
 
   sc.loop = parse_system(root.table("system"), sc.model);
 
@@ -75,10 +67,7 @@ ReachScenario parse_reach(const Document& doc) {
               "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates"});
   s.horizon = r.number("horizon", NumberRule::positive());
   s.steps = static_cast<int>(r.integer("steps", 1, 100000));
-  static constexpr std::array<std::string_view, 2> modes{"line_search", "min_enclosure"};
-  s.mode = r.string_or("rate_mode", "line_search", modes) == "min_enclosure"
-               ? reach::RateMode::min_enclosure
-               : reach::RateMode::line_search;
+  s.mode = enum_or(r, "rate_mode", reach::kRateModeNames, reach::RateMode::line_search);
   s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
   s.min_diagonal = r.number_or("min_diagonal", 0.01, NumberRule::non_negative());
@@ -108,16 +97,18 @@ ReachScenario parse_reach(const Document& doc) {
   if (const auto saf = root.optional_table("safety")) {
     declare(*saf, {"cones", "omega_abs_max", "omega_norm_max"});
     if (saf->has("cones")) {
-      static constexpr std::array<std::string_view, 2> types{"keep_out", "keep_in"};
       int idx = 0;
       for (const TableReader& c : saf->array_of_tables("cones")) {
-        declare(c, {"name", "type", "axis_b", "direction_i", "half_angle_deg"});
+        // The cone schema of kinds pet_erg and mission (common_tables.hpp) plus a name; the
+        // governor's field keys (delta_offset, ...) are not part of a safety cone.
+        declare(c, {"name"});
         reach::PointingCone cone;
         cone.name = c.string_or("name", "cone" + std::to_string(idx++));
-        cone.keep_out = c.string("type", types) == "keep_out";
-        cone.axis_b = c.direction("axis_b");
-        cone.direction_i = c.direction("direction_i");
-        cone.half_angle = c.number("half_angle_deg", {0.0, 180.0, true, true}) * std::numbers::pi / 180.0;
+        const ConeGeometry g = read_cone_geometry(c);
+        cone.keep_out = g.keep_out;
+        cone.axis_b = g.axis_b;
+        cone.direction_i = g.direction_i;
+        cone.half_angle = g.half_angle;
         sc.safety.cones.push_back(cone);
       }
     }

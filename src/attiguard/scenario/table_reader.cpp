@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/messages.hpp"
 
 namespace attiguard::scenario {
@@ -129,7 +130,7 @@ Eigen::VectorXd read_numbers(const std::string& file, const toml::node& n, const
 }  // namespace
 
 TableReader::TableReader(const Document& doc)
-    : shared_(std::make_shared<Shared>()), table_(&doc.root), path_() {
+    : shared_(std::make_shared<Shared>()), table_(&root_table(doc)), path_() {
   shared_->file = doc.path.string();
   shared_->tables[table_];
 }

@@ -16,6 +16,8 @@
 #include <string_view>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "attiguard/scenario/document.hpp"
 
 namespace attiguard::scenario {

@@ -8,18 +8,12 @@
 #include <initializer_list>
 
 #include "attiguard/scenario/messages.hpp"
-#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
 
 namespace {
-
-void declare(const TableReader& table, std::initializer_list<std::string_view> keys) {
-  for (const std::string_view key : keys) {
-    (void)table.has(key);
-  }
-}
 
 std::string num(double x) { return detail::format_number(x); }
 
@@ -29,33 +23,13 @@ constexpr double kMaxThrustTiltDeg = 10.0;
 
 }  // namespace
 
-double minimum_mission_time(const WaypointScenario& sc) noexcept {
-  const double a_max = sc.mission.T_max / sc.mission.mass;
-  double t = 0.0;
-  lie::Vec3 from = sc.p0_i;
-  for (const lie::Vec3& wp : sc.waypoints_i) {
-    t += 2.0 * std::sqrt((wp - from).norm() / a_max);
-    from = wp;
-  }
-  return t;
-}
-
-WaypointScenario parse_waypoint(const Document& doc) {
-  WaypointScenario sc;
+sim::WaypointScenario parse_waypoint(const Document& doc) {
+  sim::WaypointScenario sc;
   guidance::MissionParams& mp = sc.mission;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
                  "attitude_control", "fine_position", "guidance", "simulation"});
-  const std::string kind = root.string("kind");
-  if (kind != "waypoint") {
-    root.fail("kind", "expected \"waypoint\", got " + detail::quoted(kind, '"'));
-  }
-  const std::string stem = doc.path.stem().string();
-  sc.name = root.string_or("name", stem.empty() ? "scenario" : stem);
-  if (sc.name.empty()) {
-    root.fail("name", "must not be empty");
-  }
-  (void)root.string_or("description", "");
+  sc.name = read_header(root, doc, "waypoint");
 
   const TableReader craft = root.table("spacecraft");
   declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque",
@@ -115,15 +89,12 @@ WaypointScenario parse_waypoint(const Document& doc) {
   mp.acceleration_fraction =
       g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
   mp.pointing_tolerance = g.number_or("pointing_tolerance", 1e-6, {0.0, 1.0, true, true});
-  static constexpr std::array<std::string_view, 2> metrics{"quaternion", "thrust_axis"};
-  mp.pointing_thrust_axis = g.string_or("pointing_error", "quaternion", metrics) == "thrust_axis";
+  mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, false);
   mp.arrival_radius = g.number("arrival_radius", NumberRule::positive());
   mp.position_accuracy = g.number("position_accuracy", NumberRule::positive());
   mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
   mp.braking_margin = g.number_or("braking_margin", 1.0, {0.0, 1.0, true, false});
-  static constexpr std::array<std::string_view, 2> distances{"along_velocity", "norm"};
-  mp.brake_along_velocity =
-      g.string_or("braking_distance", "along_velocity", distances) == "along_velocity";
+  mp.brake_along_velocity = enum_or(g, "braking_distance", sim::kBrakingDistanceNames, true);
   mp.main_cutoff_speed = g.number_or("main_cutoff_speed", 0.02, NumberRule::non_negative());
   mp.replan_distance = g.number_or("replan_distance", 50.0, NumberRule::positive());
   mp.brake_speed =
@@ -133,10 +104,8 @@ WaypointScenario parse_waypoint(const Document& doc) {
   const double full_deg =
       g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
   mp.projection.cos_full = std::cos(full_deg * kPi / 180.0);
-  static constexpr std::array<std::string_view, 2> timings{"immediate", "braking_point"};
-  mp.flip_timing = g.string_or("flip_timing", "immediate", timings) == "braking_point"
-                       ? guidance::FlipTiming::braking_point
-                       : guidance::FlipTiming::immediate;
+  mp.flip_timing =
+      enum_or(g, "flip_timing", sim::kFlipTimingNames, guidance::FlipTiming::immediate);
   mp.flip_lead_time = g.number_or("flip_lead_time", 60.0, NumberRule::non_negative());
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",

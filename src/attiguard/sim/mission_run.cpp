@@ -5,15 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "attiguard/core/errors.hpp"
-#include "attiguard/io/csv_writer.hpp"
-#include "attiguard/io/json_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
 
 namespace attiguard::sim {
 
@@ -23,7 +19,7 @@ double MissionResult::delta_v() const noexcept {
   return dv;
 }
 
-MissionResult simulate_mission(const scenario::MissionScenario& sc, governor::GovernorMode mode,
+MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode mode,
                                const MissionObserver& observer) {
   governor::GovernorParams params = sc.params;
   params.mode = mode;
@@ -62,10 +58,10 @@ MissionResult simulate_mission(const scenario::MissionScenario& sc, governor::Go
 
 namespace {
 
-nlohmann::json flight_json(const scenario::MissionScenario& sc, governor::GovernorMode mode,
+nlohmann::json flight_json(const MissionScenario& sc, governor::GovernorMode mode,
                            const MissionResult& r) {
   nlohmann::json j;
-  j["governor"] = scenario::governor_mode_name(mode);
+  j["governor"] = std::string(governor::kGovernorModeNames.name(mode));
   j["completed"] = r.flight.completed;
   j["waypoints_reached"] =
       std::count_if(r.flight.waypoints.begin(), r.flight.waypoints.end(),
@@ -87,11 +83,8 @@ nlohmann::json flight_json(const scenario::MissionScenario& sc, governor::Govern
 
 }  // namespace
 
-nlohmann::json run_mission(const scenario::MissionScenario& sc, const std::filesystem::path& out_dir) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  io::ensure_directory(out_dir);
-  io::CsvWriter csv(out_dir / "trajectory.csv",
-                    {"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
+MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows) {
+  rows.begin({"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
                      "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "tau_norm",
                      "thrust", "mode", "waypoint", "qg_w", "qg_x", "qg_y", "qg_z", "qd_w", "qd_x",
                      "qd_y", "qd_z", "trigger", "min_margin"});
@@ -111,17 +104,28 @@ nlohmann::json run_mission(const scenario::MissionScenario& sc, const std::files
                                      static_cast<double>(c.waypoint), qg(0), qg(1), qg(2), qg(3),
                                      qd(0), qd(1), qd(2), qd(3), g.trigger ? 1.0 : 0.0,
                                      g.cone_count > 0 ? g.min_margin() : 0.0};
-    csv.row(row);
+    rows.row(row);
   };
   const governor::GovernorMode mode = sc.params.mode;
   const governor::GovernorMode twin_mode =
       mode == governor::GovernorMode::none ? governor::GovernorMode::pet : governor::GovernorMode::none;
-  const MissionResult own = simulate_mission(sc, mode, observer);
-  csv.close();
-  const MissionResult twin = simulate_mission(sc, twin_mode);
-  if (!own.flight.finite || !twin.flight.finite) {
+  MissionFlights f;
+  f.mode = mode;
+  f.twin_mode = twin_mode;
+  f.own = simulate_mission(sc, mode, rows.wants_rows() ? MissionObserver(observer) : MissionObserver{});
+  f.twin = simulate_mission(sc, twin_mode);
+  if (!f.own.flight.finite || !f.twin.flight.finite) {
+    rows.end();
     throw NumericalError("mission: non-finite state or command during the run");
   }
+  return f;
+}
+
+nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& f) {
+  const governor::GovernorMode mode = f.mode;
+  const governor::GovernorMode twin_mode = f.twin_mode;
+  const MissionResult& own = f.own;
+  const MissionResult& twin = f.twin;
   const bool own_constrained = mode != governor::GovernorMode::none;
   const MissionResult& con = own_constrained ? own : twin;
   const MissionResult& unc = own_constrained ? twin : own;
@@ -151,9 +155,6 @@ nlohmann::json run_mission(const scenario::MissionScenario& sc, const std::files
   summary["unconstrained"] = flight_json(sc, governor::GovernorMode::none, unc);
   summary["time_cost"] = con.flight.total_time - unc.flight.total_time;
   summary["delta_v_cost"] = con.delta_v() - unc.delta_v();
-  summary["wall_time_s"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  io::write_json(out_dir / "summary.json", summary);
   return summary;
 }
 

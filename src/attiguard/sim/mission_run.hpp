@@ -6,11 +6,11 @@
 /// other setting of the governor (the unconstrained twin, `governor = "none"`, or the PET-ERG when
 /// the scenario itself is unconstrained) so the summary gives the cost of the constraints.
 
-#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
-#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/io/row_sink.hpp"
+#include "attiguard/sim/mission_scenario.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 
 namespace attiguard::sim {
@@ -34,13 +34,25 @@ using MissionObserver = std::function<void(double t, const dynamics::SpacecraftS
 
 /// Flies the mission with the governor in `mode` (PET-ERG paper (3)-(6) on the waypoint paper's
 /// Algorithm 1); `observer` sees each sample with the governor's output.
-[[nodiscard]] MissionResult simulate_mission(const scenario::MissionScenario& sc,
+[[nodiscard]] MissionResult simulate_mission(const MissionScenario& sc,
                                              governor::GovernorMode mode,
                                              const MissionObserver& observer = {});
 
-/// Runs the scenario and its twin (PET-ERG paper (3)-(6) on the waypoint paper's Algorithm 1),
-/// writes DIR/trajectory.csv (the scenario's own flight) and
-/// DIR/summary.json (docs/mission.md, "Outputs"), and returns the summary.
-nlohmann::json run_mission(const scenario::MissionScenario& sc, const std::filesystem::path& out_dir);
+/// The scenario's own flight and its twin (the other setting of the governor).
+struct MissionFlights {
+  governor::GovernorMode mode{governor::GovernorMode::pet};       ///< the scenario's governor
+  governor::GovernorMode twin_mode{governor::GovernorMode::none};  ///< none, or pet when mode is none
+  MissionResult own;
+  MissionResult twin;
+};
+
+/// Flies the scenario (its trajectory rows emitted into `rows`: t, p_x..p_z, v_x..v_z,
+/// q_w..q_z, omega_x..omega_z, tau_x..tau_z, tau_norm, thrust, mode, waypoint, qg_w..qg_z,
+/// qd_w..qd_z, trigger, min_margin) and its twin (PET-ERG paper (3)-(6) on the waypoint paper's
+/// Algorithm 1). Throws NumericalError when a state or command is not finite.
+[[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows);
+
+/// The summary.json object of a mission (docs/mission.md, "Outputs"), without wall_time_s.
+[[nodiscard]] nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& f);
 
 }  // namespace attiguard::sim

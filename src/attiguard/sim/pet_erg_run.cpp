@@ -1,15 +1,13 @@
 #include "attiguard/sim/pet_erg_run.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
 
+#include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/integrate/integrator.hpp"
-#include "attiguard/io/csv_writer.hpp"
-#include "attiguard/io/json_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
@@ -31,7 +29,7 @@ struct Stop {
 
 /// Sampling instants k·T_s in (0, duration), output instants, and schedule waypoints in
 /// (0, duration), merged (instants closer than 1e-9·min(T_s, output_interval) are one stop).
-std::vector<Stop> stop_plan(const scenario::PetErgScenario& sc) {
+std::vector<Stop> stop_plan(const PetErgScenario& sc) {
   std::vector<Stop> stops;
   for (double t : uniform_instants(sc.duration, sc.output_interval)) {
     stops.push_back({t, false, true});
@@ -72,17 +70,17 @@ std::vector<Stop> stop_plan(const scenario::PetErgScenario& sc) {
 
 }  // namespace
 
-PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
+PetErgResult simulate_pet_erg(const PetErgScenario& sc,
                               const PetErgRowObserver& on_output) {
   const governor::AttitudeGovernor gov(sc.params, sc.cones);
-  const Mat3 J_inv = sc.params.J.inverse();
-  const Mat3& J = sc.params.J;
+  const dynamics::RigidBody body(sc.params.J);
   const int n_cones = static_cast<int>(sc.cones.size());
 
   PetErgResult r;
   r.gamma_d = gov.gamma_d();
   r.gamma_d_upper = gov.torque_threshold().upper_bound;
   r.gamma_d_loose = gov.gamma_d_loose();
+  r.gamma_cap = gov.gamma_cap();
   r.gamma_g_initial = gov.gamma_g(sc.R_g0);
   r.gamma_initial = gov.gamma(sc.R_g0);
   r.V_initial = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
@@ -101,7 +99,7 @@ PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3) = out.xi_g;
-    d.segment<3>(6) = J_inv * ((J * s.x).cross(s.x) + out.tau_b);
+    d.segment<3>(6) = body.angular_acceleration(s.x, out.tau_b);  // eq. (1)
     return d;
   };
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
@@ -185,13 +183,12 @@ nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1
 
 }  // namespace
 
-nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc, const PetErgResult& r,
-                               double wall_time_s) {
+nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) {
   nlohmann::json j;
   j["kind"] = "pet_erg";
   j["name"] = sc.name;
-  j["governor"] = scenario::governor_mode_name(sc.params.mode);
-  j["integrator"] = sc.integrator.method == integrate::Method::rkmk4 ? "rkmk4" : "rkmk_dp54";
+  j["governor"] = std::string(governor::kGovernorModeNames.name(sc.params.mode));
+  j["integrator"] = std::string(integrate::kMethodNames.name(sc.integrator.method));
   j["duration"] = sc.duration;
   j["kp"] = sc.params.gains.kp;
   j["kd"] = sc.params.gains.kd;
@@ -204,7 +201,7 @@ nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc, const PetErgR
   j["gamma_d"] = r.gamma_d;
   j["gamma_d_upper_bound"] = r.gamma_d_upper;
   j["gamma_d_loose"] = r.gamma_d_loose;
-  j["gamma_cap"] = sc.params.gains.kp * (2.0 - sc.params.epsilon_gamma);
+  j["gamma_cap"] = r.gamma_cap;
   j["gamma_g_initial"] = finite_or_null(r.gamma_g_initial);
   j["gamma_initial"] = r.gamma_initial;
   j["V_initial"] = r.V_initial;
@@ -247,13 +244,11 @@ nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc, const PetErgR
                      {"repulsive_gain", c.repulsive_gain}});
   }
   j["cones"] = cones;
-  j["wall_time_s"] = wall_time_s;
+  if (r.output_rows > 0) j["output_rows"] = r.output_rows;
   return j;
 }
 
-nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesystem::path& out_dir) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  io::ensure_directory(out_dir);
+PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
   std::vector<std::string> columns{
       "t",       "q_w",     "q_x",     "q_y",      "q_z",     "omega_x", "omega_y", "omega_z",
       "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w",    "qg_x",    "qg_y",    "qg_z",
@@ -263,8 +258,9 @@ nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesy
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
     columns.push_back("margin_" + std::to_string(i));
   }
-  io::CsvWriter csv(out_dir / "trajectory.csv", columns);
+  rows.begin(columns);
   std::vector<double> row(columns.size());
+  long emitted = 0;
   const PetErgRowObserver write_row = [&](double t, const PetErgState& y, const Mat3& R_d,
                                           const GovernorOutput& out) {
     const lie::Quat q = lie::rotation_to_quat(y.R[0]);
@@ -284,15 +280,12 @@ nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesy
     for (int i = 0; i < out.cone_count; ++i) {
       row[fixed + static_cast<std::size_t>(i)] = out.margins[static_cast<std::size_t>(i)];
     }
-    csv.row(row);
+    rows.row(row);
+    ++emitted;
   };
-  const PetErgResult result = simulate_pet_erg(sc, write_row);
-  csv.close();
-  nlohmann::json summary = pet_erg_summary(
-      sc, result, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
-  summary["output_rows"] = csv.rows();
-  io::write_json(out_dir / "summary.json", summary);
-  return summary;
+  PetErgResult result = simulate_pet_erg(sc, rows.wants_rows() ? write_row : PetErgRowObserver{});
+  result.output_rows = emitted;
+  return result;
 }
 
 }  // namespace attiguard::sim

@@ -5,7 +5,6 @@
 /// (R, R_g, ω) ∈ SO(3)² × R³ is integrated with the RKMK integrators, which stop exactly at every
 /// sampling instant t_k = k·T_s where the trigger (5) is evaluated and then held.
 
-#include <filesystem>
 #include <functional>
 #include <vector>
 
@@ -13,7 +12,8 @@
 
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/integrate/product_state.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/io/row_sink.hpp"
+#include "attiguard/sim/pet_erg_scenario.hpp"
 
 namespace attiguard::sim {
 
@@ -30,6 +30,7 @@ struct PetErgResult {
   double gamma_d{0.0};           ///< Γ_d (certified lower bound)
   double gamma_d_upper{0.0};     ///< attained value bracketing the exact Γ_d from above
   double gamma_d_loose{0.0};     ///< closed-form bound on Γ_d
+  double gamma_cap{0.0};         ///< the cap k_p(2 − ε_Γ) of Γ
   double gamma_g_initial{0.0};   ///< Γ_g(R_g(0)) (+∞ without cones)
   double gamma_initial{0.0};     ///< Γ(R_g(0))
   double V_initial{0.0};         ///< V(R_0, ω_0, R_g(0))
@@ -49,20 +50,22 @@ struct PetErgResult {
   long steps{0};
   long rejected_steps{0};
   long evaluations{0};
+  long output_rows{0};  ///< rows emitted into a sink (record_pet_erg)
 };
 
 /// Simulates (1) under (3) with the update (4), (5)-(6) or none (PET-ERG paper) without any
 /// file output; `on_output` (optional) receives t = 0 and every
 /// output instant. Throws NumericalError on divergence.
-[[nodiscard]] PetErgResult simulate_pet_erg(const scenario::PetErgScenario& sc,
+[[nodiscard]] PetErgResult simulate_pet_erg(const PetErgScenario& sc,
                                             const PetErgRowObserver& on_output = {});
 
-/// The summary.json object of a PET-ERG run (PET-ERG paper, Sec. V figures; keys: docs/scenario-format.md, section "pet_erg").
-[[nodiscard]] nlohmann::json pet_erg_summary(const scenario::PetErgScenario& sc,
-                                             const PetErgResult& result, double wall_time_s);
+/// simulate_pet_erg with one row per output instant emitted into `rows` (columns t, q_w..q_z,
+/// omega_x..z, tau_x..z, tau_norm, qg_w..qg_z, qd_w..qd_z, V, gamma_d, gamma_g, gamma, trigger,
+/// attitude_error, reference_error, margin_0..: docs/scenario-format.md, "pet_erg", "Outputs").
+[[nodiscard]] PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows);
 
-/// Runs the scenario (PET-ERG paper, Sec. V), writes out_dir/trajectory.csv and out_dir/summary.json, returns the
-/// summary. Throws NumericalError on divergence, InputError when the files cannot be written.
-nlohmann::json run_pet_erg(const scenario::PetErgScenario& sc, const std::filesystem::path& out_dir);
+/// The summary.json object of a PET-ERG run (PET-ERG paper, Sec. V figures; keys:
+/// docs/scenario-format.md, section "pet_erg"), without wall_time_s.
+[[nodiscard]] nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& result);
 
 }  // namespace attiguard::sim

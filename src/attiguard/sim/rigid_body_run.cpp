@@ -1,14 +1,11 @@
 #include "attiguard/sim/rigid_body_run.hpp"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/dynamics/attitude_state.hpp"
 #include "attiguard/integrate/integrator.hpp"
-#include "attiguard/io/csv_writer.hpp"
-#include "attiguard/io/json_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
@@ -20,32 +17,16 @@ using dynamics::AttitudeState;
 using lie::Mat3;
 using lie::Vec3;
 
-const char* law_name(scenario::TorqueLaw law) {
-  switch (law) {
-    case scenario::TorqueLaw::free:
-      return "free";
-    case scenario::TorqueLaw::constant_torque:
-      return "constant_torque";
-    case scenario::TorqueLaw::pd:
-      return "pd";
-  }
-  return "?";
-}
-
-const char* method_name(integrate::Method m) {
-  return m == integrate::Method::rkmk4 ? "rkmk4" : "rkmk_dp54";
-}
-
 /// The torque law of the scenario as a function of the state.
-struct TorqueLaw {
-  const scenario::RigidBodyScenario& sc;
+struct TorqueOf {
+  const RigidBodyScenario& sc;
   [[nodiscard]] Vec3 operator()(const AttitudeState& y) const noexcept {
     switch (sc.law) {
-      case scenario::TorqueLaw::pd:
+      case TorqueLaw::pd:
         return control::pd_torque(y.R[0], y.x, sc.R_ref_ib, {sc.kp, sc.kd});
-      case scenario::TorqueLaw::constant_torque:
+      case TorqueLaw::constant_torque:
         return sc.torque_b;
-      case scenario::TorqueLaw::free:
+      case TorqueLaw::free:
         break;
     }
     return Vec3::Zero();
@@ -54,21 +35,17 @@ struct TorqueLaw {
 
 }  // namespace
 
-nlohmann::json run_rigid_body(const scenario::RigidBodyScenario& sc,
-                              const std::filesystem::path& out_dir) {
-  const auto wall_start = std::chrono::steady_clock::now();
+RigidBodyResult simulate_rigid_body(const RigidBodyScenario& sc, io::RowSink& rows) {
   const dynamics::RigidBody body(sc.J);
-  const TorqueLaw torque{sc};
+  const TorqueOf torque{sc};
   // Distances are measured to the PD reference, or to the initial attitude for the other laws.
-  const Mat3 R_target = sc.law == scenario::TorqueLaw::pd ? sc.R_ref_ib : sc.R0_ib;
+  const Mat3 R_target = sc.law == TorqueLaw::pd ? sc.R_ref_ib : sc.R0_ib;
 
-  io::ensure_directory(out_dir);
-  io::CsvWriter csv(out_dir / "trajectory.csv",
-                    {"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z", "tau_x",
-                     "tau_y", "tau_z", "attitude_error_rad", "phi", "energy", "V", "h_x", "h_y",
-                     "h_z"});
+  RigidBodyResult r;
+  rows.begin({"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z", "tau_x", "tau_y",
+              "tau_z", "attitude_error_rad", "phi", "energy", "V", "h_x", "h_y", "h_z"});
   auto lyapunov = [&](const AttitudeState& y) {
-    return sc.law == scenario::TorqueLaw::pd
+    return sc.law == TorqueLaw::pd
                ? control::pd_lyapunov(body.inertia(), y.R[0], y.x, sc.R_ref_ib, {sc.kp, sc.kd})
                : body.kinetic_energy(y.x);
   };
@@ -86,7 +63,8 @@ nlohmann::json run_rigid_body(const scenario::RigidBodyScenario& sc,
                                      body.kinetic_energy(y.x),
                                      lyapunov(y),
                                      h(0), h(1), h(2)};
-    csv.row(row);
+    rows.row(row);
+    ++r.output_rows;
   };
 
   AttitudeState y;
@@ -115,32 +93,42 @@ nlohmann::json run_rigid_body(const scenario::RigidBodyScenario& sc,
   const std::vector<double> instants = uniform_instants(sc.duration, sc.output_interval);
   const integrate::IntegrationStats stats =
       integrate::integrate(field, y, 0.0, instants, sc.integrator, on_output, on_step);
-  csv.close();
+  r.R_end = y.R[0];
+  r.omega_end = y.x;
+  r.R_target = R_target;
+  r.E0 = E0;
+  r.h0_norm = h0.norm();
+  r.max_torque_norm = max_torque;
+  r.max_energy_drift = max_energy_drift;
+  r.max_momentum_drift = max_momentum_drift;
+  r.steps = stats.accepted_steps;
+  r.rejected_steps = stats.rejected_steps;
+  r.evaluations = stats.evaluations;
+  return r;
+}
 
-  const Mat3 R_err = y.R[0].transpose() * R_target;
+nlohmann::json rigid_body_summary(const RigidBodyScenario& sc, const RigidBodyResult& r) {
+  const Mat3 R_err = r.R_end.transpose() * r.R_target;
   nlohmann::json summary;
   summary["kind"] = "rigid_body";
   summary["name"] = sc.name;
-  summary["law"] = law_name(sc.law);
-  summary["integrator"] = method_name(sc.integrator.method);
+  summary["law"] = std::string(kTorqueLawNames.name(sc.law));
+  summary["integrator"] = std::string(integrate::kMethodNames.name(sc.integrator.method));
   summary["duration"] = sc.duration;
-  summary["steps"] = stats.accepted_steps;
-  summary["rejected_steps"] = stats.rejected_steps;
-  summary["evaluations"] = stats.evaluations;
-  summary["output_rows"] = csv.rows();
+  summary["steps"] = r.steps;
+  summary["rejected_steps"] = r.rejected_steps;
+  summary["evaluations"] = r.evaluations;
+  summary["output_rows"] = r.output_rows;
   summary["final_attitude_error"] = lie::phi(R_err);
   summary["final_attitude_error_rad"] = lie::log(R_err).norm();
-  summary["final_omega_norm"] = y.x.norm();
-  summary["max_torque_norm"] = max_torque;
-  summary["final_orthonormality_error"] = lie::orthonormality_error(y.R[0]);
-  if (sc.law == scenario::TorqueLaw::free) {
-    summary["max_energy_drift_rel"] = E0 > 0.0 ? max_energy_drift / E0 : max_energy_drift;
+  summary["final_omega_norm"] = r.omega_end.norm();
+  summary["max_torque_norm"] = r.max_torque_norm;
+  summary["final_orthonormality_error"] = lie::orthonormality_error(r.R_end);
+  if (sc.law == TorqueLaw::free) {
+    summary["max_energy_drift_rel"] = r.E0 > 0.0 ? r.max_energy_drift / r.E0 : r.max_energy_drift;
     summary["max_momentum_drift_rel"] =
-        h0.norm() > 0.0 ? max_momentum_drift / h0.norm() : max_momentum_drift;
+        r.h0_norm > 0.0 ? r.max_momentum_drift / r.h0_norm : r.max_momentum_drift;
   }
-  summary["wall_time_s"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  io::write_json(out_dir / "summary.json", summary);
   return summary;
 }
 

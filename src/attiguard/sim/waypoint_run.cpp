@@ -2,12 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 
 #include "attiguard/integrate/integrator.hpp"
-#include "attiguard/io/csv_writer.hpp"
-#include "attiguard/io/json_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
 
 namespace attiguard::sim {
@@ -24,7 +21,7 @@ bool command_finite(const guidance::MissionCommand& c) noexcept {
 
 }  // namespace
 
-WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
+WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
                                     const SampleObserver& observer,
                                     const CommandFilter& filter) {
   const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque,
@@ -117,12 +114,8 @@ WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
   return res;
 }
 
-nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
-                            const std::filesystem::path& out_dir) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  io::ensure_directory(out_dir);
-  io::CsvWriter csv(out_dir / "trajectory.csv",
-                    {"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
+WaypointSimResult record_waypoint(const WaypointScenario& sc, io::RowSink& rows) {
+  rows.begin({"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
                      "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "thrust", "rct_1",
                      "rct_2", "rct_3", "rct_4", "rct_5", "rct_6", "mode", "waypoint"});
   const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque,
@@ -145,19 +138,22 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
                 static_cast<double>(c.waypoint)};
     last_written = (k % every == 0) || c.transition;
     if (last_written) {
-      csv.row(last_row);
+      rows.row(last_row);
     }
     ++k;
   };
   const WaypointSimResult res = simulate_waypoint(sc, observer);
   if (!last_written) {
-    csv.row(last_row);
+    rows.row(last_row);
   }
-  csv.close();
   if (!res.finite) {
+    rows.end();
     throw NumericalError("waypoint: non-finite state or command during the run");
   }
+  return res;
+}
 
+nlohmann::json waypoint_summary(const WaypointScenario& sc, const WaypointSimResult& res) {
   nlohmann::json summary;
   summary["kind"] = "waypoint";
   summary["name"] = sc.name;
@@ -225,26 +221,23 @@ nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
       {"cruise_speed", mp.cruise_speed},
       {"acceleration_fraction", mp.acceleration_fraction},
       {"pointing_tolerance", mp.pointing_tolerance},
-      {"pointing_error", mp.pointing_thrust_axis ? "thrust_axis" : "quaternion"},
+      {"pointing_error", std::string(kPointingErrorNames.name(mp.pointing_thrust_axis))},
       {"arrival_radius", mp.arrival_radius},
       {"position_accuracy", mp.position_accuracy},
       {"speed_accuracy", mp.speed_accuracy},
       {"braking_margin", mp.braking_margin},
-      {"braking_distance", mp.brake_along_velocity ? "along_velocity" : "norm"},
+      {"braking_distance", std::string(kBrakingDistanceNames.name(mp.brake_along_velocity))},
       {"main_cutoff_speed", mp.main_cutoff_speed},
       {"replan_distance", mp.replan_distance},
       {"brake_speed", mp.brake_speed},
       {"velocity_projection", mp.velocity_projection},
       {"projection_blend_speed", mp.projection.blend_speed},
-      {"flip_timing", mp.flip_timing == guidance::FlipTiming::immediate ? "immediate" : "braking_point"},
+      {"flip_timing", std::string(kFlipTimingNames.name(mp.flip_timing))},
       {"flip_lead_time", mp.flip_lead_time},
       {"control_period", sc.control_period},
-      {"integrator", sc.integrator.method == integrate::Method::rkmk4 ? "rkmk4" : "rkmk_dp54"},
+      {"integrator", std::string(integrate::kMethodNames.name(sc.integrator.method))},
       {"step", sc.integrator.step},
       {"duration", sc.duration}};
-  summary["wall_time_s"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  io::write_json(out_dir / "summary.json", summary);
   return summary;
 }
 

@@ -4,7 +4,6 @@
 /// SO(3) × R⁹ with the RKMK integrators, the mission state machine and its controllers sampled
 /// every control period with zero-order hold of every command (main thruster, RCT, torque).
 
-#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -13,7 +12,8 @@
 
 #include "attiguard/dynamics/spacecraft_plant.hpp"
 #include "attiguard/guidance/mission.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/io/row_sink.hpp"
+#include "attiguard/sim/waypoint_scenario.hpp"
 
 namespace attiguard::sim {
 
@@ -64,14 +64,20 @@ using CommandFilter =
 
 /// Simulates Algorithm 1 of the waypoint paper on the plant (3)-(5); `filter`, when set, may
 /// change each sample's command (torque, thrust) before the observer sees it and it is applied.
-[[nodiscard]] WaypointSimResult simulate_waypoint(const scenario::WaypointScenario& sc,
+[[nodiscard]] WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
                                                   const SampleObserver& observer = {},
                                                   const CommandFilter& filter = {});
 
-/// Runs the scenario, writes out_dir/trajectory.csv (t, p_x..p_z, v_x..v_z, q_w..q_z,
-/// omega_x..omega_z, tau_x..tau_z, thrust, rct_1..rct_6, mode, waypoint) and
-/// out_dir/summary.json, and returns the summary.
-nlohmann::json run_waypoint(const scenario::WaypointScenario& sc,
-                            const std::filesystem::path& out_dir);
+/// simulate_waypoint with the trajectory rows emitted into `rows`: one row every
+/// output_interval (rounded to control samples), at every mode transition and at the end
+/// (columns t, p_x..p_z, v_x..v_z, q_w..q_z, omega_x..omega_z, tau_x..tau_z, thrust,
+/// rct_1..rct_6, mode, waypoint). Throws NumericalError when a state or command is not finite
+/// (after emitting the rows).
+[[nodiscard]] WaypointSimResult record_waypoint(const WaypointScenario& sc, io::RowSink& rows);
+
+/// The summary.json object of a waypoint run (waypoint paper, Sec. VI figures; keys:
+/// docs/scenario-format.md, section "waypoint"), without wall_time_s.
+[[nodiscard]] nlohmann::json waypoint_summary(const WaypointScenario& sc,
+                                              const WaypointSimResult& res);
 
 }  // namespace attiguard::sim

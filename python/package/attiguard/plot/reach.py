@@ -1,7 +1,7 @@
 """Plots of `attiguard reach` (ConReach, contraction-reachability paper, Sec. 6, Fig. 1).
 
 Reads DIR/reach.json, steps.csv, tube.csv, boundary.csv and samples.csv written by
-``attiguard reach`` (src/attiguard/reach/reach_run.hpp) and writes:
+``attiguard reach`` (src/attiguard/app/reach_run.hpp) and writes:
 
 - ``reach_omega.png`` (Fig. 1a): sampled ω trajectories, the state-tube ω boxes and the search
   regions U_0 and U_6 (dashed) in ω space;

@@ -4,15 +4,17 @@
 #include <numbers>
 #include <string>
 
-#include "attiguard/campaign/dispersion.hpp"
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/key_path.hpp"
+#include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/document_tree.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 namespace {
 
 constexpr const char* kBase = R"(
@@ -36,17 +38,17 @@ TEST(CampaignDispersion, NumberStaysInBoundsAndIsWritten) {
   const auto doc = doc_with(R"("control.kp" = { distribution = "truncated_normal", sigma = 1.0, delta = 0.5 })");
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
-  EXPECT_EQ(nominal.root.get("dispersions"), nullptr);
+  EXPECT_FALSE(nominal.has_top_level("dispersions"));
   ASSERT_EQ(dispersion_columns(plan), std::vector<std::string>{"control.kp"});
-  Rng rng(3);
+  campaign::Rng rng(3);
   for (int i = 0; i < 1000; ++i) {
-    toml::table root = nominal.root;
+    Document out = nominal;
     std::vector<double> values;
-    apply_dispersions(plan, nominal, rng, root, values);
+    apply_dispersions(plan, nominal, rng, out, values);
     ASSERT_EQ(values.size(), 1u);
     EXPECT_GE(values[0], 4.5);
     EXPECT_LE(values[0], 5.5);
-    EXPECT_EQ(*resolve_key_path(root, "control.kp")->value<double>(), values[0]);
+    EXPECT_EQ(*resolve_key_path(root_table(out), "control.kp")->value<double>(), values[0]);
   }
 }
 
@@ -55,11 +57,11 @@ TEST(CampaignDispersion, InertiaStaysPhysical) {
       R"("body.inertia" = { type = "inertia", moments_rel_sigma = 0.3, axes_max_angle_deg = 90 })");
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
-  Rng rng(4);
+  campaign::Rng rng(4);
   for (int i = 0; i < 2000; ++i) {
-    toml::table root = nominal.root;
+    Document out = nominal;
     std::vector<double> v;
-    apply_dispersions(plan, nominal, rng, root, v);
+    apply_dispersions(plan, nominal, rng, out, v);
     ASSERT_EQ(v.size(), 6u);
     lie::Mat3 J;
     J << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
@@ -75,11 +77,11 @@ TEST(CampaignDispersion, AttitudeBallAndDirectionCap) {
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
   const lie::Mat3 R0 = lie::exp(lie::Vec3(0, 0, 40.0 * std::numbers::pi / 180.0));
-  Rng rng(5);
+  campaign::Rng rng(5);
   for (int i = 0; i < 2000; ++i) {
-    toml::table root = nominal.root;
+    Document out = nominal;
     std::vector<double> v;
-    apply_dispersions(plan, nominal, rng, root, v);
+    apply_dispersions(plan, nominal, rng, out, v);
     ASSERT_EQ(v.size(), 7u);  // cones[0].direction_i (xyz) then initial.attitude (q): sorted keys
     const lie::Vec3 n(v[0], v[1], v[2]);
     EXPECT_NEAR(n.norm(), 1.0, 1e-12);
@@ -93,13 +95,13 @@ TEST(CampaignDispersion, UniformAttitudeCoversSO3) {
   const auto doc = doc_with(R"("initial.attitude" = { type = "attitude", mode = "uniform" })");
   const DispersionPlan plan = read_dispersions(doc);
   const auto nominal = nominal_document(doc);
-  Rng rng(6);
+  campaign::Rng rng(6);
   double mean_trace = 0.0;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
-    toml::table root = nominal.root;
+    Document out = nominal;
     std::vector<double> v;
-    apply_dispersions(plan, nominal, rng, root, v);
+    apply_dispersions(plan, nominal, rng, out, v);
     mean_trace += lie::quat_to_rotation(lie::Quat(v[0], v[1], v[2], v[3])).trace();
   }
   EXPECT_NEAR(mean_trace / n, 0.0, 0.03);  // E[tr R] = 0 under the Haar measure
@@ -131,4 +133,4 @@ TEST(CampaignDispersion, BadEntriesAreLocatedInputErrors) {
 }
 
 }  // namespace
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

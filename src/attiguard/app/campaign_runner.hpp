@@ -1,5 +1,5 @@
 #pragma once
-/// @file runner.hpp
+/// @file campaign_runner.hpp
 /// One campaign: the scenario, its dispersions, and the execution of run k (draw, validate with
 /// the kind's own check, run in memory, reduce the summary to one CSV row).
 
@@ -12,17 +12,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/app/kinds.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/kinds.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::app {
 
 /// A loaded campaign scenario.
 struct Campaign {
   scenario::Document nominal;   ///< the scenario without [dispersions] / [campaign]
-  DispersionPlan plan;
-  const scenario::KindHandler* handler{nullptr};
+  scenario::DispersionPlan plan;
+  const KindHandler* handler{nullptr};
   std::uint64_t seed{0};
   /// Summary figures recorded per run (numeric and boolean top-level keys of the nominal run's
   /// summary, sorted, without wall_time_s and output_rows).
@@ -45,7 +45,7 @@ struct RunRecord {
   bool violation{false};           ///< a "*_satisfied" summary flag is false
 };
 
-/// Loads SCENARIO.toml, reads its dispersions, checks the nominal scenario with its kind, and
+/// Loads the scenario file, reads its dispersions, checks the nominal scenario with its kind, and
 /// runs it once (in `scratch`) to learn the summary figures. Throws InputError (the kind must
 /// be a `run` kind), NumericalError when the nominal run fails.
 [[nodiscard]] Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
@@ -53,14 +53,14 @@ struct RunRecord {
 
 /// The dispersed scenario of run k after `attempt` draws: draws are taken from one stream
 /// seeded with run_seed(seed, k), so attempt a is reproducible. `values` receives the values.
-[[nodiscard]] scenario::Document dispersed_document(const Campaign& c, Rng& rng,
+[[nodiscard]] scenario::Document dispersed_document(const Campaign& c, campaign::Rng& rng,
                                                     std::vector<double>& values);
 
 /// Runs run k: draws until the kind's check accepts the scenario (at most plan.max_attempts,
 /// then status rejected), runs it (exceptions, NaN in the summary: status failed). Never
 /// throws for a problem of the run itself. With options.write_files the run writes its
 /// trajectory.csv/summary.json into options.out_dir (replay).
-[[nodiscard]] RunRecord run_one(const Campaign& c, long k, const scenario::RunOptions& options);
+[[nodiscard]] RunRecord run_one(const Campaign& c, long k, const RunOptions& options);
 
 /// Header of runs.csv.
 [[nodiscard]] std::vector<std::string> csv_columns(const Campaign& c);
@@ -73,4 +73,4 @@ void run_many(const Campaign& c, const std::vector<long>& indices, int threads,
               const std::filesystem::path& scratch, const std::atomic<bool>& stop,
               const std::function<void(const RunRecord&)>& on_done);
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::app

@@ -11,7 +11,7 @@
 
 #include <toml++/toml.h>
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 /// One step of a key path: a key, then optionally an index into the array it names.
 struct KeyStep {
@@ -55,4 +55,4 @@ void assign_key_path(toml::table& root, std::string_view path, Value&& value) {
   }
 }
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

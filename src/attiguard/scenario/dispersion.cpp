@@ -1,4 +1,4 @@
-#include "attiguard/campaign/dispersion.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <array>
@@ -7,14 +7,15 @@
 #include <optional>
 #include <string_view>
 
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/document_tree.hpp"
+#include "attiguard/scenario/key_path.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 namespace {
 
@@ -31,7 +32,7 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
   static constexpr std::array<std::string_view, 5> kTypes{"number", "vector", "inertia",
                                                           "attitude", "direction"};
   const std::string type = t.string_or("type", "number", kTypes);
-  const auto pos = resolve_key_path(nominal.root, key);
+  const auto pos = resolve_key_path(root_table(nominal), key);
   if (!pos) t.fail_here("no value at key path '" + key + "' in the scenario");
   const toml::node& value = *pos;
   auto is_number = [](const toml::node& n) { return n.is_floating_point() || n.is_integer(); };
@@ -110,7 +111,7 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
 double as_double(const toml::node& n) { return n.value<double>().value_or(0.0); }
 
 /// A scalar draw around `nominal`.
-double draw_scalar(const Dispersion& d, double nominal, Rng& rng) {
+double draw_scalar(const Dispersion& d, double nominal, campaign::Rng& rng) {
   const double mean = d.has_mean ? d.mean : nominal;
   const double lo = d.has_bounds ? d.min : nominal - d.delta;
   const double hi = d.has_bounds ? d.max : nominal + d.delta;
@@ -130,7 +131,7 @@ double draw_scalar(const Dispersion& d, double nominal, Rng& rng) {
 }
 
 /// A unit vector uniform on the sphere.
-Vec3 unit_vector(Rng& rng) {
+Vec3 unit_vector(campaign::Rng& rng) {
   const double z = rng.uniform(-1.0, 1.0);
   const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
@@ -138,7 +139,7 @@ Vec3 unit_vector(Rng& rng) {
 }
 
 /// A rotation vector uniform (Haar measure) within the geodesic ball of radius max_angle.
-Vec3 ball_rotation(double max_angle, Rng& rng) {
+Vec3 ball_rotation(double max_angle, campaign::Rng& rng) {
   const double norm = 1.0 - std::cos(max_angle);
   for (int i = 0; i < 100000; ++i) {
     const double theta = rng.uniform(0.0, max_angle);
@@ -148,7 +149,7 @@ Vec3 ball_rotation(double max_angle, Rng& rng) {
 }
 
 /// A unit vector uniform on the cap of half-angle `alpha` around the unit vector `n`.
-Vec3 cap_vector(const Vec3& n, double alpha, Rng& rng) {
+Vec3 cap_vector(const Vec3& n, double alpha, campaign::Rng& rng) {
   const double c = 1.0 - rng.uniform01() * (1.0 - std::cos(alpha));
   const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
   const double phi = rng.uniform(0.0, 2.0 * std::numbers::pi);
@@ -166,17 +167,17 @@ scenario::TableReader single_value_reader(const scenario::Document& holder) {
 }
 
 scenario::Document holder_of(const scenario::Document& nominal, const toml::node& value) {
-  scenario::Document h{nominal.path, toml::table{}};
-  h.root.insert("value", value);
+  scenario::Document h(nominal.path);
+  root_table(h).insert("value", value);
   return h;
 }
 
 }  // namespace
 
 scenario::Document nominal_document(const scenario::Document& doc) {
-  scenario::Document nominal{doc.path, doc.root};
-  nominal.root.erase("dispersions");
-  nominal.root.erase("campaign");
+  scenario::Document nominal = doc;
+  root_table(nominal).erase("dispersions");
+  root_table(nominal).erase("campaign");
   return nominal;
 }
 
@@ -185,7 +186,7 @@ DispersionPlan read_dispersions(const scenario::Document& doc) {
   scenario::TableReader root(doc);
   DispersionPlan plan;
   const scenario::TableReader table = root.table("dispersions");
-  const toml::table* raw = doc.root["dispersions"].as_table();
+  const toml::table* raw = root_table(doc)["dispersions"].as_table();
   if (raw->empty()) table.fail_here("[dispersions] must list at least one dispersed value");
   for (const auto& [k, v] : *raw) {
     (void)v;
@@ -226,10 +227,11 @@ std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
   return cols;
 }
 
-void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
-                       toml::table& root, std::vector<double>& values) {
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
+                       Document& out, std::vector<double>& values) {
+  toml::table& root = root_table(out);
   for (const Dispersion& d : plan.items) {
-    const toml::node* nom = resolve_key_path(nominal.root, d.key);
+    const toml::node* nom = resolve_key_path(root_table(nominal), d.key);
     if (nom == nullptr) throw InputError(nominal.path.string() + ": no value at '" + d.key + "'");
     switch (d.type) {
       case DispersionType::number: {
@@ -305,4 +307,4 @@ void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nom
   }
 }
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

@@ -1,8 +1,8 @@
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/key_path.hpp"
 
 #include <charconv>
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 std::vector<KeyStep> split_key_path(std::string_view path) {
   std::vector<KeyStep> steps;
@@ -47,4 +47,4 @@ const toml::node* resolve_key_path(const toml::table& root, std::string_view pat
   return n;
 }
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

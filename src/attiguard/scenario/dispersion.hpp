@@ -14,12 +14,10 @@
 #include <string>
 #include <vector>
 
-#include <toml++/toml.h>
-
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/scenario/document.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 
 /// What a dispersion changes.
 enum class DispersionType { number, vector, inertia, attitude, direction };
@@ -52,7 +50,7 @@ struct Dispersion {
 
 /// The parsed dispersions of a campaign and the scenario they apply to.
 struct DispersionPlan {
-  std::vector<Dispersion> items;   ///< in the order of the file (toml++ keeps keys sorted)
+  std::vector<Dispersion> items;   ///< in the order of the file (the parser keeps keys sorted)
   long max_attempts{1};            ///< [campaign] max_attempts: draws until admissible
 };
 
@@ -67,9 +65,9 @@ struct DispersionPlan {
 /// Names of the columns of the dispersed values, in order (e.g. "initial.omega_b[0]").
 [[nodiscard]] std::vector<std::string> dispersion_columns(const DispersionPlan& plan);
 
-/// Draws every dispersion from `rng` and writes the dispersed values into `root` (the nominal
-/// document's table); appends the drawn values (dispersion_columns order) to `values`.
-void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, Rng& rng,
-                       toml::table& root, std::vector<double>& values);
+/// Draws every dispersion from `rng` and writes the dispersed values into `out` (a copy of the
+/// nominal document); appends the drawn values (dispersion_columns order) to `values`.
+void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
+                       Document& out, std::vector<double>& values);
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

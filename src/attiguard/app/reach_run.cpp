@@ -1,4 +1,4 @@
-#include "attiguard/reach/reach_run.hpp"
+#include "attiguard/app/reach_run.hpp"
 
 #include <array>
 #include <chrono>
@@ -18,7 +18,9 @@
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/partition.hpp"
 
-namespace attiguard::reach {
+namespace attiguard::app {
+
+using namespace attiguard::reach;  // the driver of reach/ (ConReach, partition, safety)
 
 namespace {
 
@@ -59,7 +61,7 @@ int choose_chart(const std::vector<ReachResult>& results) {
 
 }  // namespace
 
-nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir,
+nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::path& out_dir,
                          const parallel::World& world) {
   const auto wall0 = std::chrono::steady_clock::now();
   if (world.root()) io::ensure_directory(out_dir);
@@ -75,7 +77,7 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
   j["name"] = sc.name;
   j["kind"] = "reach";
   j["model"] = sc.model;
-  j["rate_mode"] = sc.settings.mode == RateMode::line_search ? "line_search" : "min_enclosure";
+  j["rate_mode"] = std::string(reach::kRateModeNames.name(sc.settings.mode));
   j["horizon"] = sc.settings.horizon;
   j["n_steps"] = sc.settings.steps;
   j["cells"] = cells.size();
@@ -267,4 +269,4 @@ nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesyste
   return j;
 }
 
-}  // namespace attiguard::reach
+}  // namespace attiguard::app

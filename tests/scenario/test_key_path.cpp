@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "attiguard/campaign/key_path.hpp"
+#include "attiguard/scenario/key_path.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::scenario {
 namespace {
 
 TEST(CampaignKeyPath, SplitsKeysAndIndices) {
@@ -42,4 +42,4 @@ TEST(CampaignKeyPath, ResolvesAndAssigns) {
 }
 
 }  // namespace
-}  // namespace attiguard::campaign
+}  // namespace attiguard::scenario

@@ -1,6 +1,6 @@
 #pragma once
 /// @file reach_run.hpp
-/// Runs a `reach` scenario end to end and writes its outputs into a directory:
+/// The reach driver (docs/architecture.md): runs a `reach` configuration end to end and writes its outputs into a directory:
 ///   reach.json     summary (keys: docs/reach.md, "Outputs")
 ///   trajectory.csv nominal trajectory (first cell) at every sub-step time
 ///   steps.csv      per cell and step: t, c, r, Q, P, U_i ω box, attitude enclosure radius
@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/parallel/mpi_world.hpp"
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/reach/reach_scenario.hpp"
 
-namespace attiguard::reach {
+namespace attiguard::app {
 
 /// Runs the scenario and writes the outputs. Returns the summary (also in reach.json).
 /// Throws NumericalError (solver/NaN/chart/soundness failure) or VerificationFailure (safety
@@ -23,7 +23,7 @@ namespace attiguard::reach {
 /// Under MPI the partition cells are split over the ranks of `world`; every rank gets the
 /// verdict (and throws the same VerificationFailure), only rank 0 runs the soundness sampling
 /// and writes files.
-nlohmann::json run_reach(const scenario::ReachScenario& sc, const std::filesystem::path& out_dir,
+nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::path& out_dir,
                          const parallel::World& world = {});
 
-}  // namespace attiguard::reach
+}  // namespace attiguard::app

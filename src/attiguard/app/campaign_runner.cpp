@@ -1,4 +1,4 @@
-#include "attiguard/campaign/runner.hpp"
+#include "attiguard/app/campaign_runner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,12 @@
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 
-namespace attiguard::campaign {
+namespace attiguard::app {
+
+using campaign::format_number;
+using campaign::csv_quote;
+using campaign::Rng;
+using campaign::run_seed;
 
 namespace {
 
@@ -48,15 +53,15 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
   const scenario::Document doc = scenario::load_document(path);
   Campaign c;
   c.seed = seed;
-  c.nominal = nominal_document(doc);
-  c.handler = &scenario::handler_for(c.nominal);
+  c.nominal = scenario::nominal_document(doc);
+  c.handler = &handler_for(c.nominal);
   if (c.handler->name == "reach") {
     throw InputError(path.string() + ": kind 'reach' is an analysis, not a run: campaigns need a "
                                      "kind that `attiguard run` runs");
   }
-  c.plan = read_dispersions(doc);
+  c.plan = scenario::read_dispersions(doc);
   c.handler->check(c.nominal);
-  scenario::RunOptions options;
+  RunOptions options;
   options.out_dir = scratch;
   options.write_files = false;
   const nlohmann::json summary = c.handler->run(c.nominal, options);
@@ -67,13 +72,13 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
 }
 
 scenario::Document dispersed_document(const Campaign& c, Rng& rng, std::vector<double>& values) {
-  scenario::Document d{c.nominal.path, c.nominal.root};
+  scenario::Document d = c.nominal;
   values.clear();
-  apply_dispersions(c.plan, c.nominal, rng, d.root, values);
+  scenario::apply_dispersions(c.plan, c.nominal, rng, d, values);
   return d;
 }
 
-RunRecord run_one(const Campaign& c, long k, const scenario::RunOptions& options) {
+RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
   RunRecord r;
   r.index = k;
   r.seed = run_seed(c.seed, static_cast<std::uint64_t>(k));
@@ -123,7 +128,7 @@ RunRecord run_one(const Campaign& c, long k, const scenario::RunOptions& options
 
 std::vector<std::string> csv_columns(const Campaign& c) {
   std::vector<std::string> cols{"run", "seed", "attempts", "status", "reason"};
-  for (const std::string& s : dispersion_columns(c.plan)) cols.push_back(s);
+  for (const std::string& s : scenario::dispersion_columns(c.plan)) cols.push_back(s);
   cols.push_back("violation");
   for (const std::string& s : c.figures) cols.push_back(s);
   return cols;
@@ -159,7 +164,7 @@ void run_many(const Campaign& c, const std::vector<long>& indices, int threads,
   std::atomic<std::size_t> next{0};
   std::mutex done_mutex;
   auto work = [&](int worker) {
-    scenario::RunOptions options;
+    RunOptions options;
     options.out_dir = scratch / ("worker" + std::to_string(worker));
     options.write_files = false;
     for (std::size_t i = next++; i < indices.size() && !stop.load(); i = next++) {
@@ -178,4 +183,4 @@ void run_many(const Campaign& c, const std::vector<long>& indices, int threads,
   for (auto& t : pool) t.join();
 }
 
-}  // namespace attiguard::campaign
+}  // namespace attiguard::app

@@ -1,0 +1,112 @@
+#include "attiguard/app/kinds.hpp"
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/sim/mission_run.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/rigid_body_run.hpp"
+#include "attiguard/sim/waypoint_run.hpp"
+
+namespace attiguard::app {
+
+namespace {
+
+using scenario::Document;
+
+/// Runs `simulate` (rows into the sink the options ask for, returns the summary), then adds
+/// wall_time_s and writes DIR/summary.json when files are written: the one place a run's files
+/// are written.
+nlohmann::json run_with_sink(const RunOptions& options,
+                             const std::function<nlohmann::json(io::RowSink&)>& simulate) {
+  const auto start = std::chrono::steady_clock::now();
+  io::NullRowSink none;
+  std::optional<io::CsvRowSink> csv;
+  if (options.write_files) {
+    io::ensure_directory(options.out_dir);
+    csv.emplace(options.out_dir / "trajectory.csv");
+  }
+  io::RowSink* file_rows = csv ? static_cast<io::RowSink*>(&*csv) : nullptr;
+  std::optional<io::TeeRowSink> tee;
+  if (file_rows && options.rows) tee.emplace(*file_rows, *options.rows);
+  io::RowSink& rows = tee ? *tee : file_rows ? *file_rows : options.rows ? *options.rows : none;
+  nlohmann::json summary = simulate(rows);
+  summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.write_files) io::write_json(options.out_dir / "summary.json", summary);
+  return summary;
+}
+
+/// `check` of a simulation kind: parse (and validate) only.
+template <auto Parse>
+void check_kind(const Document& doc) {
+  (void)Parse(doc);
+}
+
+/// `run` of a simulation kind: Parse the document into the kind's configuration, Simulate it
+/// with the rows into the chosen sink (the typed result), Summarize the result (the kind's one
+/// summary writer).
+template <auto Parse, auto Simulate, auto Summarize>
+nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
+  const auto config = Parse(doc);
+  return run_with_sink(options,
+                       [&](io::RowSink& rows) { return Summarize(config, Simulate(config, rows)); });
+}
+
+// Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
+nlohmann::json run_reach(const Document& doc, const RunOptions&) {
+  scenario::fail_at(doc, "kind", "scenario kind 'reach' is analysed with `attiguard reach " +
+                                     doc.path.string() + " --out DIR`, not `attiguard run`");
+}
+
+constexpr std::array<KindHandler, 5> registry{{
+    {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
+     &check_kind<&scenario::parse_rigid_body>,
+     &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>},
+    {"pet_erg",
+     "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
+     &check_kind<&scenario::parse_pet_erg>,
+     &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>},
+    {"waypoint",
+     "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
+     "decelerate/fine state machine)",
+     &check_kind<&scenario::parse_waypoint>,
+     &run_kind<&scenario::parse_waypoint, &sim::record_waypoint, &sim::waypoint_summary>},
+    {"mission",
+     "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
+     "slews; also flies the unconstrained twin",
+     &check_kind<&scenario::parse_mission>,
+     &run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>},
+    {"reach",
+     "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
+     &check_kind<&scenario::parse_reach>, &run_reach},
+}};
+
+}  // namespace
+
+std::span<const KindHandler> kinds() { return registry; }
+
+const KindHandler& handler_for(const Document& doc) {
+  const std::string kind = scenario::scenario_kind(doc);
+  for (const KindHandler& h : registry) {
+    if (h.name == kind) {
+      return h;
+    }
+  }
+  std::string known;
+  for (const KindHandler& h : registry) {
+    known += (known.empty() ? "" : ", ") + std::string(h.name);
+  }
+  scenario::fail_at(doc, "kind", "unknown scenario kind '" + kind + "' (known kinds: " + known + ")");
+}
+
+}  // namespace attiguard::app

@@ -1,0 +1,38 @@
+#pragma once
+/// @file reach_scenario.hpp
+/// The validated configuration of a `reach` analysis (ConReach, reach paper, Algorithm 1): the
+/// closed loop, the initial set, the settings, the partition, soundness sampling and the safety
+/// specification. Read by scenario::parse_reach (keys: docs/scenario-format.md, section "reach");
+/// consumed by the reach driver app/reach_run.
+
+#include <memory>
+#include <string>
+
+#include "attiguard/core/name_table.hpp"
+#include "attiguard/reach/closed_loop.hpp"
+#include "attiguard/reach/conreach.hpp"
+#include "attiguard/reach/safety.hpp"
+#include "attiguard/reach/soundness.hpp"
+
+namespace attiguard::reach {
+
+/// Names of RateMode in scenario files and reach.json (docs/reach.md).
+inline constexpr NameTable<RateMode, 2> kRateModeNames{
+    {{{RateMode::line_search, "line_search"}, {RateMode::min_enclosure, "min_enclosure"}}}};
+
+/// Everything a `reach` run needs, validated.
+struct ReachScenario {
+  std::string name;
+  std::shared_ptr<const ClosedLoop> loop;  ///< [system]
+  std::string model;                       ///< [system] model
+  InitialSet initial;                      ///< [initial]
+  ConReachSettings settings;               ///< [reach]
+  int attitude_cells{1};                   ///< [partition] attitude_cells (per axis)
+  int omega_cells{1};                      ///< [partition] omega_cells (per axis)
+  int threads{0};                          ///< [partition] threads (0: all cores)
+  SoundnessSettings soundness;             ///< [soundness]
+  SafetySpec safety;                       ///< [safety]
+  int boundary_points{200};                ///< [output] boundary_points
+};
+
+}  // namespace attiguard::reach

@@ -1,0 +1,110 @@
+#pragma once
+/// @file common_tables.hpp
+/// The parts of the scenario schema that several kinds share, each read by one function
+/// (docs/scenario-format.md; docs/architecture.md, "Where the configuration structs live"): the
+/// header (`kind`, `name`, `description`), the governor block (`governor`, [control] gains,
+/// [erg]), one cone table (pet_erg, mission and reach: same keys, defaults, units, messages), the
+/// integrator keys of [simulation], and enum-valued keys read through the enum's name table.
+
+#include <array>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "attiguard/core/name_table.hpp"
+#include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/integrate/integrator_settings.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+/// Declares the keys a table may hold before any is read (TableReader::has), so that a typo of a
+/// required key is reported as that typo rather than as a different key missing.
+void declare(const TableReader& table, std::initializer_list<std::string_view> keys);
+
+/// An enum-valued key: its text must be one of the table's names (listed in table order in the
+/// message otherwise); `fallback` when absent.
+template <class Enum, std::size_t N>
+[[nodiscard]] Enum enum_or(const TableReader& t, std::string_view key,
+                           const NameTable<Enum, N>& names, Enum fallback) {
+  const std::array<std::string_view, N> allowed = names.names();
+  return *names.find(t.string_or(key, names.name(fallback), allowed));
+}
+
+/// A required enum-valued key.
+template <class Enum, std::size_t N>
+[[nodiscard]] Enum enum_required(const TableReader& t, std::string_view key,
+                                 const NameTable<Enum, N>& names) {
+  const std::array<std::string_view, N> allowed = names.names();
+  return *names.find(t.string(key, allowed));
+}
+
+/// The header of every kind: `kind` must equal `expected_kind`; returns `name` (default: the
+/// file's stem, or `default_name` when it has none; must not be empty); reads `description`.
+[[nodiscard]] std::string read_header(const TableReader& root, const Document& doc,
+                                      std::string_view expected_kind,
+                                      std::string_view default_name = "scenario");
+
+/// An angle given as `<key>_deg` (degrees) or `<key>` (radians), exactly one of them; `rule_rad`
+/// bounds it in radians (the degree form's bounds are converted).
+[[nodiscard]] double angle(const TableReader& t, const std::string& key, const NumberRule& rule_rad);
+
+/// The shared keys of a cone table: `type` ("keep_in", default, or "keep_out"), `axis_b`,
+/// `direction_i` (normalised), `half_angle` (rad) or `half_angle_deg`: θ_c ∈ (0, π] of a keep-in
+/// cone, α ∈ [0, π) of a keep-out cone (PET-ERG paper, constraint (2b)).
+struct ConeGeometry {
+  bool keep_out{false};
+  Eigen::Vector3d axis_b{Eigen::Vector3d::UnitZ()};
+  Eigen::Vector3d direction_i{Eigen::Vector3d::UnitZ()};
+  double half_angle{0.0};  ///< [rad]
+  /// The key the half angle was given as (for messages about it).
+  std::string half_angle_key{"half_angle"};
+};
+
+/// Reads the shared cone keys of `t` (declares them; the caller declares its own extras).
+[[nodiscard]] ConeGeometry read_cone_geometry(const TableReader& t);
+
+/// One [[cones]] table of kinds pet_erg and mission: constraint (2b) of the PET-ERG paper,
+/// keep-in (θ_c) or keep-out (α, stored as the keep-in cone of π − α), with the field's
+/// delta_offset, zeta_offset and repulsive_gain. Throws InputError.
+[[nodiscard]] governor::ConeConstraint parse_cone(const TableReader& t);
+
+/// The optional [[cones]] array of `root` (at most governor::kMaxCones), each read by
+/// parse_cone and finished.
+[[nodiscard]] std::vector<governor::ConeConstraint> parse_cones(const TableReader& root);
+
+/// The governor block shared by kinds pet_erg and mission: `governor` (name table
+/// governor::kGovernorModeNames, default "pet"), [control] kp, kd, tau_max (PD law (3) and the
+/// torque limit (2a)), and the optional [erg] table (parse_erg_table). `control_extra` names
+/// the kind's own extra [control] keys (declared, read by the caller from the returned table).
+/// The inertia J is left to the caller.
+TableReader parse_governor_block(const TableReader& root, governor::GovernorParams& params,
+                                 std::initializer_list<std::string_view> control_extra = {});
+
+/// Reads the optional `[erg]` table of `root` into `params` (PET-ERG paper: κ of (4)/(6), c_Γ and
+/// T_s of (5)-(6), ε of the navigation field, ε_Γ of the cap k_p(2 − ε_Γ)); keys left out keep
+/// the values in `params`; unknown keys are errors.
+void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
+
+/// The governor of `params` and `cones`, with its constructor's validation (Γ_d, cones) errors
+/// located at `where` of `t` (or at `t` itself when `where` is empty).
+[[nodiscard]] governor::AttitudeGovernor make_governor(const TableReader& t, std::string_view where,
+                    const governor::GovernorParams& params,
+                    const std::vector<governor::ConeConstraint>& cones);
+
+/// Parses the integrator keys of a `[simulation]` table (integrator, step, abs_tol, rel_tol,
+/// max_step); shared by every scenario kind (docs/scenario-format.md, "Integrator keys").
+[[nodiscard]] integrate::IntegratorSettings parse_integrator_settings(const TableReader& simulation);
+
+/// Rejects `key` of [simulation] (present, or defaulted: then the message asks to set it) when
+/// its value exceeds the duration.
+void require_at_most_duration(const TableReader& simulation, std::string_view key, double value,
+                              double duration);
+
+}  // namespace attiguard::scenario

@@ -1,0 +1,34 @@
+#pragma once
+/// @file pet_erg_scenario.hpp
+/// The validated configuration of a `pet_erg` run: constrained attitude control with the PD law
+/// (3) and the periodic event-triggered (5)-(6), continuous (4), or no reference governor of the
+/// PET-ERG paper. Read from a scenario file by scenario::parse_pet_erg (keys:
+/// docs/scenario-format.md, section "pet_erg"); consumed by sim/pet_erg_run.
+
+#include <string>
+#include <vector>
+
+#include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/reference_schedule.hpp"
+#include "attiguard/integrate/integrator_settings.hpp"
+#include "attiguard/lie/so3.hpp"
+
+namespace attiguard::sim {
+
+/// Everything a `pet_erg` run needs, validated (scenario::parse_pet_erg also checks the
+/// admissibility of the initial state, PET-ERG paper Theorem 1).
+struct PetErgScenario {
+  std::string name;
+  governor::GovernorParams params;            ///< governor, [body], [control], [erg]
+  std::vector<governor::ConeConstraint> cones;  ///< [[cones]] (at most governor::kMaxCones)
+  lie::Mat3 R0_ib{lie::Mat3::Identity()};     ///< [initial] attitude
+  lie::Vec3 omega0_b{lie::Vec3::Zero()};      ///< [initial] omega_b [rad/s]
+  lie::Mat3 R_g0{lie::Mat3::Identity()};      ///< [initial] reference (default: attitude)
+  governor::ReferenceSchedule desired;        ///< [desired] attitude or schedule
+  double duration{0.0};                       ///< [simulation] duration [s]
+  double output_interval{0.0};                ///< [simulation] output_interval [s]
+  double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
+  integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
+};
+
+}  // namespace attiguard::sim

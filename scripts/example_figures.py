@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Every example's figures, captured once and compared on every test run (issue 12, item 2).
+"""Every example's figures, captured once and compared on every test run (docs/architecture.md,
+"Behaviour kept").
 
 Each example of examples/*.toml is run through the `attiguard` program (`attiguard run` for the
 simulation kinds, `attiguard reach` for kind reach) into a scratch directory; every figure of its
@@ -11,7 +12,7 @@ of its dispersed run REPLAY_RUN (`attiguard campaign FILE --replay K`); a figure
 (wall times, thread counts, output paths) are left out (MACHINE_DEPENDENT below).
 
 Capture (rewrites the committed figures; run it only when a change of the figures is intended,
-e.g. after the issue 18 ConReach soundness fix, and commit the result):
+e.g. after a change to ConReach's bounds, and commit the result):
 
     scripts/capture_example_figures.sh                 # every example
     scripts/capture_example_figures.sh conreach_pd     # just these examples

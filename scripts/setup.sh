@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake g++ pkg-config
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
-  libsdp-dev liblapack-dev libblas-dev
+  libsdp-dev liblapack-dev libblas-dev libssl-dev
   libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-pytest pybind11-dev python3-dev
   python3-venv python3-setuptools python3-wheel python3-mypy

@@ -76,11 +76,51 @@ TEST(CampaignCli, ResumeAfterAnInterruptionGivesTheSameResult) {
     for (int i : {5, 1, 2, 9, 3, 4, 12, 6, 7, 8, 11, 10}) out << lines[static_cast<std::size_t>(i)] << '\n';
     out << lines[20].substr(0, 15);
   }
+  // The interrupted campaign wrote its identity when it started.
+  std::filesystem::copy_file(dir / "full/campaign_identity.json", dir / "cut/campaign_identity.json");
   const auto r = campaign(kExample, dir / "cut", "--runs 30 --seed 2 --resume");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("12 already done, 18 to run"), std::string::npos) << r.out;
   EXPECT_EQ(read_file(dir / "cut/runs.csv"), full);
   EXPECT_EQ(read_file(dir / "cut/campaign.json"), read_file(dir / "full/campaign.json"));
+  std::filesystem::remove_all(dir);
+}
+
+// --resume adds rows only to the same campaign: same scenario bytes, seed, kind and version
+// (cli/campaign_identity.hpp); otherwise exit 2 naming the difference, and the folder is left as
+// it was.
+TEST(CampaignCli, ResumeRefusesAnotherSeedOrAChangedScenario) {
+  const auto dir = fresh_dir("campaign_identity");
+  const std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / kExample);
+  const auto scenario = dir / "scenario.toml";
+  std::ofstream(scenario, std::ios::binary) << text;
+  ASSERT_EQ(campaign(scenario.string(), dir / "out", "--runs 6 --seed 1").exit_code, 0);
+  const std::string rows = read_file(dir / "out/runs.csv");
+  const auto j = nlohmann::json::parse(read_file(dir / "out/campaign.json"));
+  EXPECT_EQ(j["scenario_sha256"].get<std::string>().size(), 64u);
+  EXPECT_EQ(j["scenario_sha256"], nlohmann::json::parse(read_file(dir / "out/campaign_identity.json"))["scenario_sha256"]);
+
+  auto r = campaign(scenario.string(), dir / "out", "--runs 8 --seed 2 --resume");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("campaign_identity.json: --resume: the seed differs: the campaign in this "
+                       "folder has 1, this invocation 2"), std::string::npos) << r.err;
+
+  const auto at = text.find("tau_max");
+  ASSERT_NE(at, std::string::npos);
+  std::string edited = text;  // tau_max 2.5 -> 2.4 N m: a changed scenario, still valid
+  edited.replace(edited.find("2.5", at), 3, "2.4");
+  std::ofstream(scenario, std::ios::binary | std::ios::trunc) << edited;
+  r = campaign(scenario.string(), dir / "out", "--runs 8 --seed 1 --resume");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("--resume: the scenario file (SHA-256) differs"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(dir / "out/runs.csv"), rows);  // untouched
+
+  // Rows without an identity (a folder from an older attiguard): refused, not guessed.
+  std::filesystem::remove(dir / "out/campaign_identity.json");
+  std::ofstream(scenario, std::ios::binary | std::ios::trunc) << text;
+  r = campaign(scenario.string(), dir / "out", "--runs 8 --seed 1 --resume");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("campaign_identity.json: --resume: missing"), std::string::npos) << r.err;
   std::filesystem::remove_all(dir);
 }
 

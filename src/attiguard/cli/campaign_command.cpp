@@ -4,6 +4,8 @@
 
 #include "attiguard/cli/campaign_command.hpp"
 
+#include "attiguard/cli/campaign_identity.hpp"
+
 #include <unistd.h>
 
 #include <atomic>
@@ -93,10 +95,15 @@ void campaign_command(const CampaignArguments& args) {
 
   const std::string header = join(app::csv_columns(c));
   const std::filesystem::path runs_path = args.out_dir / "runs.csv";
+  const std::filesystem::path identity_path = args.out_dir / "campaign_identity.json";
+  const CampaignIdentity identity =
+      campaign_identity(args.scenario, args.seed, std::string(c.handler->name));
   std::map<long, std::string> done;
   if (args.resume) {
-    for (auto& [k, line] : campaign::read_runs(runs_path, header)) {
-      if (k < args.runs) done.emplace(k, std::move(line));
+    const std::map<long, std::string> previous = campaign::read_runs(runs_path, header);
+    check_resume_identity(identity_path, identity, previous.size());
+    for (const auto& [k, line] : previous) {
+      if (k < args.runs) done.emplace(k, line);
     }
   }
   parallel::barrier(world);
@@ -109,6 +116,7 @@ void campaign_command(const CampaignArguments& args) {
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {
     if (!args.resume) std::filesystem::remove(runs_path);
+    write_identity(identity_path, identity);
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
     std::cout << "Campaign " << args.scenario.string() << " (" << c.handler->name << "): "
@@ -149,8 +157,9 @@ void campaign_command(const CampaignArguments& args) {
   info.runs = args.runs;
   info.max_attempts = c.plan.max_attempts;
   for (const auto& d : c.plan.items) info.dispersed.push_back(d.key);
-  const nlohmann::json summary =
-      campaign::aggregate(info, campaign::csv_split(header), done);
+  nlohmann::json summary = campaign::aggregate(info, campaign::csv_split(header), done);
+  summary["scenario_sha256"] = identity.scenario_sha256;
+  summary["attiguard_version"] = identity.version;
   {
     std::ofstream out(args.out_dir / "campaign.json", std::ios::binary | std::ios::trunc);
     out << summary.dump(2) << '\n';

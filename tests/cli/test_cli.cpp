@@ -109,6 +109,45 @@ TEST(CliContract, BadArgumentsExitTwoWithOneLine) {
   }
 }
 
+TEST(CliContract, UnknownSubcommandListsTheSubcommands) {
+  const auto r = run_cli(scratch_dir(), "frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("unknown subcommand 'frobnicate' (subcommands: run, check, reach, campaign"),
+            std::string::npos) << r.err;
+}
+
+// --seed is an unsigned 64-bit integer: a sign, a value past 2^64 − 1 or trailing characters are
+// refused (they used to wrap or clamp to 2^64 − 1).
+TEST(CliContract, SeedOutsideUnsigned64BitsIsInvalidInput) {
+  const fs::path dir = scratch_dir();
+  const std::string file = quoted(example("pet_erg_campaign.toml").string());
+  for (const std::string seed : {"-1", "18446744073709551616", "12x", "+3"}) {
+    SCOPED_TRACE(seed);
+    const auto r = run_cli(dir, "campaign " + file + " --runs 1 --out o --seed=" + seed);
+    EXPECT_EQ(r.exit_code, 2);
+    expect_one_error_line(r);
+    EXPECT_NE(r.err.find("--seed: "), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(run_cli(dir, "campaign " + file + " --runs 1 --out o --seed 18446744073709551615").exit_code, 0);
+}
+
+TEST(CliContract, RunOnACampaignScenarioPointsToAttiguardCampaign) {
+  const auto r = run_cli(scratch_dir(), "run " + quoted(example("pet_erg_campaign.toml").string()) + " --out o");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("a campaign scenario ([dispersions]): run it with `attiguard campaign"),
+            std::string::npos) << r.err;
+}
+
+// A device that never ends, or a huge file, is refused after 16 MiB instead of filling memory.
+TEST(CliContract, EndlessOrHugeScenarioFileIsRefused) {
+  const auto r = run_cli(scratch_dir(), "check /dev/zero");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("/dev/zero: cannot read scenario file (larger than 16 MiB"), std::string::npos) << r.err;
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

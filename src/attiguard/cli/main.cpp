@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <exception>
+#include <charconv>
+#include <cstdint>
 #include <filesystem>
 #include <system_error>
 #include <iostream>
@@ -74,6 +76,34 @@ std::string scenario_argument(int argc, char** argv) noexcept {
   return {};
 }
 
+/// "run, check, reach, campaign": the subcommands' names in declaration order.
+std::string subcommand_list(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  return names;
+}
+
+/// --seed S as an unsigned 64-bit integer: digits only, at most 2^64 − 1 (docs/campaigns.md).
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, seed);
+  if (text.empty() || text.front() == '-' || text.front() == '+') {
+    throw attiguard::InputError("--seed: must be a whole number from 0 to 18446744073709551615, got '" +
+                                text + "'");
+  }
+  if (r.ec == std::errc::result_out_of_range) {
+    throw attiguard::InputError("--seed: " + text + " is larger than 2^64 - 1 = 18446744073709551615");
+  }
+  if (r.ec != std::errc{} || r.ptr != end) {
+    throw attiguard::InputError("--seed: must be a whole number from 0 to 18446744073709551615, got '" +
+                                text + "'");
+  }
+  return seed;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"attiguard: spacecraft attitude guidance and control with safety guarantees",
                "attiguard"};
@@ -123,7 +153,8 @@ int run(int argc, char** argv) {
       ->type_name("FILE");
   campaign_cmd->add_option("--runs", campaign_args.runs, "Number of runs N (runs 0..N-1)")
       ->type_name("N");
-  campaign_cmd->add_option("--seed", campaign_args.seed, "Campaign seed S (default 1)")
+  std::string seed_text = "1";  // parsed below: CLI11 would wrap "-1" and clamp 2^64
+  campaign_cmd->add_option("--seed", seed_text, "Campaign seed S, 0 to 2^64 - 1 (default 1)")
       ->type_name("S");
   campaign_cmd->add_option("--out", campaign_args.out_dir, "Output directory (created if missing)")
       ->required()
@@ -141,9 +172,22 @@ int run(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    // A first argument that is no subcommand: say so and list them.
+    if (argc > 1 && argv[1][0] != '-') {
+      bool known = false;
+      for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) known = known || sub->get_name() == argv[1];
+      if (!known) {
+        return fail(ExitCode::invalid_input, std::string("unknown subcommand '") + argv[1] +
+                                                 "' (subcommands: " + subcommand_list(app) +
+                                                 "; see attiguard --help)");
+      }
+    }
+    return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   } catch (const CLI::ParseError& e) {
     return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   }
+  if (campaign_cmd->parsed()) campaign_args.seed = parse_seed(seed_text);
 
   if (run_cmd->parsed()) {
     attiguard::cli::run_command(run_args);

@@ -97,6 +97,12 @@ void print_summary(const nlohmann::json& summary, const std::string& scenario,
 
 void run_command(const RunArguments& args) {
   const scenario::Document doc = scenario::load_document(args.scenario);
+  if (doc.has_top_level("dispersions")) {  // a campaign scenario (docs/campaigns.md)
+    throw InputError(args.scenario.string() +
+                     ": a campaign scenario ([dispersions]): run it with `attiguard campaign " +
+                     args.scenario.string() + " --runs N --out DIR`, or one of its runs with "
+                     "`--replay K`");
+  }
   const app::KindHandler& handler = app::handler_for(doc);
   make_output_dir(args.out_dir);
 

@@ -179,12 +179,19 @@ Document load_document(const std::filesystem::path& path) {
   if (!in) {
     throw cannot_read(errno != 0 ? std::strerror(errno) : "cannot open it");
   }
-  std::ostringstream content;
-  content << in.rdbuf();
+  // A scenario is a small text file: read at most kMaxScenarioBytes + 1 bytes, so that a huge
+  // file or a device that never ends (/dev/zero) is refused at once instead of filling memory.
+  std::string content(kMaxScenarioBytes + 1, '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
   if (in.bad()) {
     throw cannot_read("read error");
   }
-  return parse_document(content.str(), path);
+  content.resize(static_cast<std::size_t>(in.gcount()));
+  if (content.size() > kMaxScenarioBytes) {
+    throw cannot_read("larger than " + std::to_string(kMaxScenarioBytes >> 20) +
+                      " MiB: a scenario is a small text file; is this the right file?");
+  }
+  return parse_document(content, path);
 }
 
 std::string scenario_kind(const Document& doc) {

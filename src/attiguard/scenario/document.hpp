@@ -5,6 +5,7 @@
 /// only through scenario/'s functions, so the file format's parser is compiled into scenario/
 /// alone (docs/architecture.md, "Layers").
 
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -42,6 +43,9 @@ class Document {
  private:
   std::unique_ptr<DocumentTree> tree_;
 };
+
+/// The largest scenario file load_document reads (docs/errors.md): 16 MiB.
+inline constexpr std::size_t kMaxScenarioBytes = std::size_t{16} << 20;
 
 /// Reads and parses a scenario file.
 /// Throws InputError "FILE:LINE:COL: TOML syntax error: …" on a parse error and

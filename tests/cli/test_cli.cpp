@@ -148,6 +148,45 @@ TEST(CliContract, EndlessOrHugeScenarioFileIsRefused) {
   EXPECT_NE(r.err.find("/dev/zero: cannot read scenario file (larger than 16 MiB"), std::string::npos) << r.err;
 }
 
+// Values that parse but cannot be computed with (an angle of 1e300 rad), or that would make a
+// run that never finishes or fills the disk (1e-20 s steps, 1e-6 s output intervals, 1e-300 s
+// governor periods), are refused by `check` at their key, with the predicted count.
+TEST(CliContract, UncomputableOrEndlessValuesAreRefusedAtTheirKey) {
+  const fs::path dir = scratch_dir();
+  const std::string paper = read_file(example("pet_erg_paper.toml"));
+  const struct {
+    const char* from;
+    const char* to;
+    const char* expected;
+  } cases[] = {
+      {"angle_deg = 90.0 }", "angle_deg = 1e300 }", "desired.attitude.angle_deg: 1e+300 deg is beyond the usable range"},
+      {"step = 0.01", "step = 1e-20", "simulation.step: needs 6e+21 integrator steps over the duration 60 s"},
+      {"step = 0.01", "step = 1e-7", "simulation.step: needs 6e+08 integrator steps"},
+      {"output_interval = 0.01", "output_interval = 1e-6", "simulation.output_interval: needs 6e+07 output rows"},
+      {"sampling_period = 0.5", "sampling_period = 1e-300", "erg.sampling_period: needs 6e+301 governor samples"},
+      {"duration = 60.0", "duration = 1e300", "simulation.step: needs 1e+302 integrator steps"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.to);
+    std::string text = paper;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, std::string(c.from).size(), c.to);
+    write_file(dir / "edited.toml", text);
+    const auto r = run_cli(dir, "check edited.toml");
+    EXPECT_EQ(r.exit_code, 2);
+    expect_one_error_line(r);
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+  }
+  std::string reach = read_file(example("conreach_paper.toml"));
+  reach.replace(reach.find("integrator_step = 0.001"), 23, "integrator_step = 1e-100");
+  write_file(dir / "reach.toml", reach);
+  const auto r = run_cli(dir, "check reach.toml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("reach.integrator_step: needs 4e+100 integrator steps of the nominal"),
+            std::string::npos) << r.err;
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

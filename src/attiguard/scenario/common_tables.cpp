@@ -3,6 +3,8 @@
 
 #include "attiguard/scenario/common_tables.hpp"
 
+#include <cmath>
+
 #include <numbers>
 #include <optional>
 
@@ -170,6 +172,31 @@ integrate::IntegratorSettings parse_integrator_settings(const TableReader& simul
   settings.max_step =
       simulation.number_or("max_step", settings.max_step, NumberRule::non_negative());
   return settings;
+}
+
+void require_countable(const TableReader& t, std::string_view key, double value, double duration,
+                       double limit, std::string_view what) {
+  const double count = duration / value;
+  if (count <= limit) return;
+  const std::string message = "needs " + detail::format_number(std::ceil(count)) + " " +
+                              std::string(what) + " over the duration " +
+                              detail::format_number(duration) + " s (" + std::string(key) + " = " +
+                              detail::format_number(value) + " s; at most " +
+                              detail::format_number(limit) + "): a run that size does not finish " +
+                              "in reasonable time; use a larger " + std::string(key);
+  if (t.has(key)) t.fail(key, message);
+  t.fail(key, "the default " + message + " (set " + std::string(key) + ")");
+}
+
+void require_step_budget(const TableReader& simulation, const integrate::IntegratorSettings& s,
+                         double duration) {
+  if (s.method == integrate::Method::rkmk_dp54) {
+    if (s.max_step > 0.0) {
+      require_countable(simulation, "max_step", s.max_step, duration, kMaxRunSteps, "integrator steps");
+    }
+    return;
+  }
+  require_countable(simulation, "step", s.step, duration, kMaxRunSteps, "integrator steps");
 }
 
 }  // namespace attiguard::scenario

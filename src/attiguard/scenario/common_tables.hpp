@@ -102,6 +102,23 @@ void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
 /// max_step); shared by every scenario kind (docs/scenario-format.md, "Integrator keys").
 [[nodiscard]] integrate::IntegratorSettings parse_integrator_settings(const TableReader& simulation);
 
+/// The most integrator steps, governor samples or control samples a run may need, and the most
+/// rows it may write (docs/errors.md, "Work too large"): beyond them a run would not finish in
+/// reasonable time or would fill the disk, so the scenario is refused before any work.
+inline constexpr double kMaxRunSteps = 1e8;
+inline constexpr double kMaxOutputRows = 1e7;
+
+/// Rejects an interval `key` of `t` (a step, a period, an output interval) that `duration`
+/// would need more than `limit` times (`what`: "integrator steps", "output rows", …), with the
+/// predicted count in the message; `t.fail` when present, a "set it" message when defaulted.
+void require_countable(const TableReader& t, std::string_view key, double value, double duration,
+                       double limit, std::string_view what);
+
+/// require_countable for the integrator: `step` of a fixed-step method, `max_step` (when set)
+/// of rkmk_dp54.
+void require_step_budget(const TableReader& simulation, const integrate::IntegratorSettings& s,
+                         double duration);
+
 /// Rejects `key` of [simulation] (present, or defaulted: then the message asks to set it) when
 /// its value exceeds the duration.
 void require_at_most_duration(const TableReader& simulation, std::string_view key, double value,

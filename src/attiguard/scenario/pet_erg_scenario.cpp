@@ -126,6 +126,14 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
       simulation.number_or("convergence_tolerance", 1e-4, NumberRule::positive());
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);
   require_at_most_duration(simulation, "step", sc.integrator.step, sc.duration);
+  require_step_budget(simulation, sc.integrator, sc.duration);
+  require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
+                    "output rows");
+  if (const std::optional<TableReader> erg = root.optional_table("erg");
+      erg && sc.params.mode == GovernorMode::pet) {
+    require_countable(*erg, "sampling_period", sc.params.Ts, sc.duration, kMaxRunSteps,
+                      "governor samples");
+  }
   root.finish();
 
   // Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and

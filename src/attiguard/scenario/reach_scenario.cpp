@@ -80,6 +80,8 @@ reach::ReachScenario parse_reach(const Document& doc) {
     r.fail(r.has("integrator_step") ? "integrator_step" : "substeps",
            "integrator_step must not exceed horizon/(steps*substeps)");
   }
+  require_countable(r, "integrator_step", s.integrator_step, s.horizon, kMaxRunSteps,
+                    "integrator steps of the nominal");
 
   if (const auto part = root.optional_table("partition")) {
     declare(*part, {"attitude_cells", "omega_cells", "threads"});

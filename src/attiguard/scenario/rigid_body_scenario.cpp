@@ -52,6 +52,9 @@ sim::RigidBodyScenario parse_rigid_body(const Document& doc) {
   sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
   sc.integrator = parse_integrator_settings(simulation);
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);
+  require_step_budget(simulation, sc.integrator, sc.duration);
+  require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
+                    "output rows");
   require_at_most_duration(simulation, "step", sc.integrator.step, sc.duration);
 
   root.finish();

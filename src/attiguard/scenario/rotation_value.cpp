@@ -18,6 +18,12 @@ namespace {
 
 /// Tolerance on ‖RᵀR − I‖_F of a matrix and on |‖q‖ − 1| of a quaternion.
 constexpr double kRotationTolerance = 1e-9;
+/// Rotation angles beyond ±10⁶ rad (≈ 1.6·10⁵ turns) are refused: reduced modulo 2π they keep
+/// almost no significant digit (10⁶ rad carries an absolute rounding error of ~10⁻¹⁰ rad, 10³⁰⁰
+/// none at all), so such a value is a mistake, not an attitude.
+constexpr double kMaxRotationAngle = 1e6;
+constexpr const char* kMaxAngleText =
+    "the usable range |angle| <= 1e6 rad (5.7e7 deg): give the attitude's angle, e.g. in [-pi, pi]";
 
 constexpr std::string_view kForms =
     "exactly one of: matrix = [[...], [...], [...]], quaternion = [w, x, y, z], "
@@ -93,7 +99,12 @@ Eigen::Matrix3d TableReader::rotation(std::string_view key) const {
     return lie::quat_to_rotation(lie::Quat(q(0), q(1), q(2), q(3)));
   }
   if (has_rotation_vector) {
-    return lie::exp(rot.vector3("rotation_vector"));
+    const Eigen::Vector3d v = rot.vector3("rotation_vector");
+    if (!(v.norm() <= kMaxRotationAngle)) {
+      rot.fail("rotation_vector", "norm " + detail::format_number(v.norm()) + " rad is beyond " +
+                                      kMaxAngleText);
+    }
+    return lie::exp(v);
   }
   // Axis-angle.
   if (!has_axis) {
@@ -109,6 +120,11 @@ Eigen::Matrix3d TableReader::rotation(std::string_view key) const {
   const Eigen::Vector3d axis = rot.direction("axis");
   const double angle =
       has_angle ? rot.number("angle") : rot.number("angle_deg") * std::numbers::pi / 180.0;
+  if (!(std::abs(angle) <= kMaxRotationAngle)) {
+    rot.fail(has_angle ? "angle" : "angle_deg",
+             detail::format_number(has_angle ? rot.number("angle") : rot.number("angle_deg")) +
+                 (has_angle ? " rad" : " deg") + " is beyond " + kMaxAngleText);
+  }
   return lie::exp(angle * axis);
 }
 

@@ -137,6 +137,9 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   if (sc.duration / sc.control_period > 1e8) {
     sim.fail("control_period", "too small for the duration (more than 1e8 control samples)");
   }
+  require_step_budget(sim, sc.integrator, sc.duration);
+  require_countable(sim, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
+                    "output rows");
   root.finish();
 
   // Reachability: every waypoint needs at least the bang-bang time of its leg.

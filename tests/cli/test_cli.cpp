@@ -187,6 +187,29 @@ TEST(CliContract, UncomputableOrEndlessValuesAreRefusedAtTheirKey) {
             std::string::npos) << r.err;
 }
 
+// A run that fails numerically leaves trajectory.csv.partial (its rows up to the failure) and no
+// trajectory.csv or summary.json — not even those of an earlier run in the same folder.
+TEST(CliContract, FailedRunLeavesOnlyAPartialTrajectory) {
+  const fs::path dir = scratch_dir();
+  const std::string pd = read_file(example("rigid_body_pd.toml"));
+  write_file(dir / "good.toml", pd);
+  ASSERT_EQ(run_cli(dir, "run good.toml --out out").exit_code, 0);
+  ASSERT_TRUE(fs::exists(dir / "out/trajectory.csv"));
+  ASSERT_TRUE(fs::exists(dir / "out/summary.json"));
+  // k_d/J = 3000 1/s with a 0.05 s step: RKMK4 is unstable and the state overflows.
+  std::string bad = pd;
+  bad.replace(bad.find("kd = 1.0"), 8, "kd = 3000.0");
+  bad.replace(bad.find("step = 0.01"), 11, "step = 0.05");
+  write_file(dir / "bad.toml", bad);
+  const auto r = run_cli(dir, "run bad.toml --out out");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  expect_one_error_line(r);
+  EXPECT_FALSE(fs::exists(dir / "out/trajectory.csv"));
+  EXPECT_FALSE(fs::exists(dir / "out/summary.json"));
+  ASSERT_TRUE(fs::exists(dir / "out/trajectory.csv.partial"));
+  EXPECT_EQ(read_file(dir / "out/trajectory.csv.partial").rfind("t,", 0), 0u);
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

@@ -1,5 +1,7 @@
 #include "attiguard/app/kinds.hpp"
 
+#include "attiguard/io/partial_file.hpp"
+
 #include <array>
 #include <chrono>
 #include <functional>
@@ -33,6 +35,7 @@ nlohmann::json run_with_sink(const RunOptions& options,
   std::optional<io::CsvRowSink> csv;
   if (options.write_files) {
     io::ensure_directory(options.out_dir);
+    io::remove_outputs(options.out_dir, {"trajectory.csv", "summary.json"});
     csv.emplace(options.out_dir / "trajectory.csv");
   }
   io::RowSink* file_rows = csv ? static_cast<io::RowSink*>(&*csv) : nullptr;
@@ -40,6 +43,7 @@ nlohmann::json run_with_sink(const RunOptions& options,
   if (file_rows && options.rows) tee.emplace(*file_rows, *options.rows);
   io::RowSink& rows = tee ? *tee : file_rows ? *file_rows : options.rows ? *options.rows : none;
   nlohmann::json summary = simulate(rows);
+  if (csv) csv->end();  // trajectory.csv complete: renamed from trajectory.csv.partial
   summary["wall_time_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.write_files) io::write_json(options.out_dir / "summary.json", summary);

@@ -10,6 +10,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/csv_writer.hpp"
 #include "attiguard/io/json_file.hpp"
+#include "attiguard/io/partial_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/parallel/parallel_for.hpp"
 #include "attiguard/reach/adversarial.hpp"
@@ -64,7 +65,11 @@ int choose_chart(const std::vector<ReachResult>& results) {
 nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::path& out_dir,
                          const parallel::World& world) {
   const auto wall0 = std::chrono::steady_clock::now();
-  if (world.root()) io::ensure_directory(out_dir);
+  if (world.root()) {
+    io::ensure_directory(out_dir);
+    io::remove_outputs(out_dir, {"reach.json", "trajectory.csv", "steps.csv", "tube.csv",
+                                 "boundary.csv", "samples.csv"});
+  }
   const ClosedLoop& loop = *sc.loop;
   const std::vector<InitialSet> cells =
       partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);

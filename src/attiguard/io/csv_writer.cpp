@@ -24,7 +24,12 @@ std::string format_double(double value) {
 }
 
 CsvWriter::CsvWriter(const std::filesystem::path& path, std::vector<std::string> columns)
-    : path_(path), columns_(std::move(columns)), out_(path, std::ios::binary | std::ios::trunc) {
+    : path_(path), columns_(std::move(columns)) {
+  // An earlier complete file of that name goes first, so that a run that stops before close()
+  // leaves only PATH.partial, never an old PATH that looks like its result.
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
+  out_.open(partial_path(path), std::ios::binary | std::ios::trunc);
   if (!out_) {
     throw InputError("cannot write " + path.string() + ": " + std::strerror(errno));
   }
@@ -53,11 +58,13 @@ void CsvWriter::row(std::span<const double> values) {
 }
 
 void CsvWriter::close() {
+  if (!out_.is_open()) return;
   out_.flush();
   if (!out_) {
     throw InputError("cannot write " + path_.string() + ": write failed (disk full?)");
   }
   out_.close();
+  commit_partial(path_);
 }
 
 }  // namespace attiguard::io

@@ -10,12 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "attiguard/io/partial_file.hpp"
+
 namespace attiguard::io {
 
-/// Writes `path` with the given column names (docs/conventions.md, "Outputs").
+/// Writes `path` with the given column names (docs/conventions.md, "Outputs"): into
+/// PATH.partial, renamed to PATH by close(), so that an interrupted or failed run never leaves a
+/// truncated PATH that looks complete.
 class CsvWriter {
  public:
-  /// Creates or truncates the file; throws InputError "cannot write FILE: reason" on failure.
+  /// Removes an existing PATH and creates PATH.partial; throws InputError "cannot write FILE:
+  /// reason" on failure.
   CsvWriter(const std::filesystem::path& path, std::vector<std::string> columns);
 
   /// Appends one row; values.size() must equal the number of columns (else std::logic_error).
@@ -25,7 +30,8 @@ class CsvWriter {
   [[nodiscard]] long rows() const noexcept { return rows_; }
   [[nodiscard]] const std::vector<std::string>& columns() const noexcept { return columns_; }
 
-  /// Flushes and closes; throws InputError if the data could not be written.
+  /// Flushes, closes and renames PATH.partial to PATH (once; later calls do nothing); throws
+  /// InputError if the data could not be written.
   void close();
 
  private:

@@ -4,18 +4,23 @@
 #include <fstream>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/partial_file.hpp"
 
 namespace attiguard::io {
 
 void write_json(const std::filesystem::path& path, const nlohmann::json& value) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    throw InputError("cannot write " + path.string() + ": " + std::strerror(errno));
+  {
+    std::ofstream out(partial_path(path), std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw InputError("cannot write " + path.string() + ": " + std::strerror(errno));
+    }
+    out << value.dump(2) << '\n';
+    out.flush();
+    if (!out) {
+      throw InputError("cannot write " + path.string() + ": write failed");
+    }
   }
-  out << value.dump(2) << '\n';
-  if (!out) {
-    throw InputError("cannot write " + path.string() + ": write failed");
-  }
+  commit_partial(path);
 }
 
 void ensure_directory(const std::filesystem::path& dir) {

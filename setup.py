@@ -92,7 +92,11 @@ class CMakeBuild(build_ext):
     @staticmethod
     def _run(command: list[str]) -> None:
         print("setup.py:", " ".join(command), flush=True)
-        subprocess.run(command, check=True)
+        # ccache's base_dir (unless the caller set one): paths below the repository become
+        # relative, so this build's compile commands equal scripts/build.sh's (which sets the same).
+        env = dict(os.environ)
+        env.setdefault("CCACHE_BASEDIR", str(ROOT))
+        subprocess.run(command, check=True, env=env)
 
 
 setup(

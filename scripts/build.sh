@@ -8,7 +8,12 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # (docs/conventions.md, "Python").
 # ccache, when installed, also serves the wheel build of `pip install .` (setup.py).
 launcher=()
-if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+if command -v ccache >/dev/null 2>&1; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Paths below the repository become relative in ccache's keys: the wheel build in build-pip/
+  # (setup.py sets the same base_dir) then reuses these objects.
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(pwd)}"
+fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
   "${launcher[@]}" "$@"
 cmake --build build --parallel "$(nproc)"

@@ -135,7 +135,6 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
     Deviation z1 = ((E * z).cwiseMax(0.0) + eps) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
     const Deviation zsup = (Eplus * z).cwiseMax(0.0) * (1.0 + 1e-12) + Deviation::Constant(1e-15);
     e = ((E * e).cwiseMax(0.0) + eps) * (1.0 + 1e-12);
-    out.max_step_error = out.max_step_error.cwiseMax(eps);
 
     // 3. Segment enclosure: the tent of x* (ω*(s) = ω_0, ω*(s+h) ∈ ω_1 ± eps, slopes in F)
     // ± sup deviation, intersected with G.

@@ -52,7 +52,6 @@ struct TubeResult {
   /// Deviation bounds of the exact trajectory from nominal.front() at the last nominal point:
   /// the nominal's integration error over the whole span.
   Deviation nominal_error{Deviation::Zero()};
-  Deviation max_step_error{Deviation::Zero()};  ///< largest ε of one sub-step, componentwise
   Box3 omega_hull;                    ///< hull of the segments' ω boxes
   AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
 };

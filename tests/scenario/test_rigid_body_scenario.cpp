@@ -123,7 +123,7 @@ TEST(RigidBodyScenario, ExtraKeyIsUnknownAndTheKnownKeysAreListed) {
   EXPECT_TRUE(
       starts_with(error_of({{16, "step = 0.01\n[plot]\nx = 1"}}),
                   "bad.toml:17:2: plot: unknown key 'plot' (expected one of: body, control, "
-                  "description, initial, kind, name, simulation)"));
+                  "description, ephemeris, initial, kind, name, simulation)"));
 }
 
 TEST(RigidBodyScenario, KeysOfAnotherLawAreUnknown) {

@@ -18,6 +18,8 @@ struct RunArguments {
   std::filesystem::path scenario;  ///< SCENARIO
   std::filesystem::path out_dir;   ///< --out DIR
   bool plot{false};                ///< --plot
+  bool aem{false};                 ///< --aem: DIR/attitude.aem (docs/interop.md)
+  bool view{false};                ///< --view: DIR/view.html (docs/viewer.md)
 };
 
 /// `attiguard run SCENARIO --out DIR [--plot]`: runs the scenario, writes

@@ -19,7 +19,9 @@
 
 #include "attiguard/cli/campaign_command.hpp"
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/reach_command.hpp"
+#include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/version.hpp"
 #include "attiguard/app/failure.hpp"
@@ -124,6 +126,8 @@ int run(int argc, char** argv) {
       ->type_name("DIR");
   run_cmd->add_flag("--plot", run_args.plot,
                     "Also write PNG plots into DIR (needs python3-matplotlib)");
+  run_cmd->add_flag("--aem", run_args.aem, "Also write DIR/attitude.aem (CCSDS AEM, docs/interop.md)");
+  run_cmd->add_flag("--view", run_args.view, "Also write DIR/view.html (browser viewer, docs/viewer.md)");
 
   std::filesystem::path check_path;
   CLI::App* check_cmd =
@@ -142,6 +146,7 @@ int run(int argc, char** argv) {
       ->required()
       ->type_name("DIR");
   reach_cmd->add_flag("--plot", reach_args.plot, "Also write PNG plots into DIR");
+  reach_cmd->add_flag("--view", reach_args.view, "Also write DIR/view.html (docs/viewer.md)");
 
   attiguard::cli::CampaignArguments campaign_args;  // Monte Carlo campaigns: cli/campaign_command.cpp
   CLI::App* campaign_cmd = app.add_subcommand(
@@ -167,6 +172,23 @@ int run(int argc, char** argv) {
   campaign_cmd->add_flag("--resume", campaign_args.resume,
                          "Keep the runs already in DIR/runs.csv and run the others");
   campaign_cmd->add_flag("--plot", campaign_args.plot, "Also write histograms and scatter plots");
+
+  attiguard::cli::ExportAemArguments aem_args;  // CCSDS AEM: cli/export_aem_command.cpp
+  CLI::App* aem_cmd = app.add_subcommand(
+      "export-aem", "Write the attitude history of a run's DIR as a CCSDS AEM (docs/interop.md)");
+  aem_cmd->add_option("DIR", aem_args.dir, "Output folder of a run")->required()->type_name("DIR");
+  aem_cmd->add_option("--scenario", aem_args.scenario, "Scenario file with the [ephemeris] keys")
+      ->type_name("FILE");
+  aem_cmd->add_option("--aem-version", aem_args.version, "1.0 (default) or 2.0")->type_name("V");
+  aem_cmd->add_flag("--rates", aem_args.rates, "Angular rates as well (QUATERNION/RATE)");
+  aem_cmd->add_option("--out", aem_args.out, "Output file (default DIR/attitude.aem)")->type_name("FILE");
+
+  std::filesystem::path view_dir;  // browser viewer: cli/view_command.cpp
+  CLI::App* view_cmd = app.add_subcommand(
+      "view", "Write DIR/view.html: a self-contained 3-D browser view of a result folder (docs/viewer.md)");
+  view_cmd->add_option("DIR", view_dir, "Output folder of run, reach or campaign")
+      ->required()
+      ->type_name("DIR");
 
   try {
     app.parse(argc, argv);
@@ -197,6 +219,10 @@ int run(int argc, char** argv) {
     attiguard::cli::reach_command(reach_args);
   } else if (campaign_cmd->parsed()) {
     attiguard::cli::campaign_command(campaign_args);
+  } else if (view_cmd->parsed()) {
+    attiguard::cli::view_command(view_dir);
+  } else if (aem_cmd->parsed()) {
+    attiguard::cli::export_aem_command(aem_args);
   } else {
     return fail(ExitCode::invalid_input,
                 "a subcommand is required: run, check, reach or campaign (see attiguard --help)");

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/reach_run.hpp"
@@ -32,6 +33,7 @@ void reach_command(const ReachArguments& args) {
     summary = app::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
     if (args.plot && world.root()) (void)plot_results("reach", args.out_dir);
+    if (args.view && world.root()) (void)write_run_view(args.out_dir);
     throw;
   }
   if (!world.root()) return;
@@ -54,6 +56,7 @@ void reach_command(const ReachArguments& args) {
     for (const auto& p : plots.written) std::cout << "  " << p.string() << '\n';
     if (plots.skipped_because) std::cerr << "attiguard: warning: no plots: " << *plots.skipped_because << '\n';
   }
+  if (args.view) std::cout << "  " << write_run_view(args.out_dir).string() << '\n';
 }
 
 }  // namespace attiguard::cli

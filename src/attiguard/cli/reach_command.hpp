@@ -11,6 +11,7 @@ struct ReachArguments {
   std::filesystem::path scenario;  ///< SCENARIO (kind = "reach")
   std::filesystem::path out_dir;   ///< --out DIR
   bool plot{false};                ///< --plot
+  bool view{false};                ///< --view: DIR/view.html (docs/viewer.md)
 };
 
 /// Runs the analysis, writes DIR/reach.json and the CSV files (and plots with --plot), prints

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/export_aem_command.hpp"
+#include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/app/kinds.hpp"
@@ -117,6 +119,9 @@ void run_command(const RunArguments& args) {
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) written.push_back(path);
   }
+
+  if (args.aem) written.push_back(write_run_aem(args.scenario, args.out_dir));
+  if (args.view) written.push_back(write_run_view(args.out_dir));
 
   std::string no_plots;
   if (args.plot) {

@@ -13,6 +13,7 @@
 #include "attiguard/governor/pointing_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/ephemeris_check.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
@@ -91,6 +92,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
                  "control", "erg", "cones", "simulation"});
   sc.name = read_header(root, doc, "pet_erg");
+  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
   (void)parse_governor_block(root, sc.params);
 
   const TableReader body = root.table("body");

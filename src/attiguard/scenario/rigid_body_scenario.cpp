@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/ephemeris_check.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
@@ -18,6 +19,7 @@ sim::RigidBodyScenario parse_rigid_body(const Document& doc) {
   declare(root, {"kind", "name", "description", "body", "initial", "control", "simulation"});
 
   sc.name = read_header(root, doc, "rigid_body");
+  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
 
   const TableReader body = root.table("body");
   declare(body, {"inertia"});

@@ -9,6 +9,7 @@
 
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/ephemeris_check.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
@@ -30,6 +31,7 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
                  "attitude_control", "fine_position", "guidance", "simulation"});
   sc.name = read_header(root, doc, "waypoint");
+  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
 
   const TableReader craft = root.table("spacecraft");
   declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque",

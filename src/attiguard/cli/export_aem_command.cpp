@@ -1,0 +1,63 @@
+/// @file export_aem_command.cpp
+/// `attiguard export-aem DIR` and the `--aem` step of `attiguard run` (docs/interop.md).
+
+#include "attiguard/cli/export_aem_command.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/app/aem_export.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/ephemeris_table.hpp"
+
+namespace attiguard::cli {
+namespace {
+
+/// The scenario name of DIR/summary.json ("SPACECRAFT" when absent).
+std::string summary_name(const std::filesystem::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return "SPACECRAFT";
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_object() && j.contains("name") && j["name"].is_string()) return j["name"].get<std::string>();
+  return "SPACECRAFT";
+}
+
+}  // namespace
+
+void export_aem_command(const ExportAemArguments& args) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(args.dir, ec)) {
+    throw InputError(args.dir.string() + ": not a directory (expected the --out DIR of a run)");
+  }
+  io::AemMetadata meta;
+  if (!args.scenario.empty()) {
+    meta = scenario::parse_ephemeris(scenario::load_document(args.scenario));
+  } else {
+    meta = scenario::default_ephemeris(summary_name(args.dir));
+    meta.comments.push_back("attiguard run " + meta.object_name +
+                            "; no --scenario: default ephemeris keys (docs/interop.md)");
+  }
+  if (!args.version.empty()) {
+    if (args.version == "1.0") {
+      meta.version = io::AemVersion::v1;
+    } else if (args.version == "2.0") {
+      meta.version = io::AemVersion::v2;
+    } else {
+      throw InputError("--aem-version: must be 1.0 or 2.0, got '" + args.version + "'");
+    }
+  }
+  if (args.rates) meta.with_rates = true;
+  const auto path = app::export_aem(args.dir, meta, args.out);
+  std::cout << "Wrote:\n  " << path.string() << '\n';
+}
+
+std::filesystem::path write_run_aem(const std::filesystem::path& scenario,
+                                    const std::filesystem::path& dir) {
+  return app::export_aem(dir, scenario::parse_ephemeris(scenario::load_document(scenario)));
+}
+
+}  // namespace attiguard::cli

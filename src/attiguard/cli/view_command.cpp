@@ -1,0 +1,44 @@
+/// @file view_command.cpp
+/// `attiguard view DIR` and the `--view` step of `run` / `reach` (docs/viewer.md).
+
+#include "attiguard/cli/view_command.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <system_error>
+
+#include "attiguard/app/view_page.hpp"
+#include "attiguard/core/errors.hpp"
+
+#ifndef ATTIGUARD_VIEWER_BUNDLE_PATH
+#define ATTIGUARD_VIEWER_BUNDLE_PATH ""
+#endif
+
+namespace attiguard::cli {
+
+std::filesystem::path viewer_bundle_path() {
+  if (const char* env = std::getenv("ATTIGUARD_VIEWER_BUNDLE"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  return ATTIGUARD_VIEWER_BUNDLE_PATH;
+}
+
+std::filesystem::path write_run_view(const std::filesystem::path& dir) {
+  return app::write_view(dir, viewer_bundle_path());
+}
+
+void view_command(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw InputError(dir.string() + ": not a directory (expected the --out DIR of attiguard run, "
+                                    "reach or campaign)");
+  }
+  const auto path = write_run_view(dir);
+  const auto bytes = std::filesystem::file_size(path, ec);
+  char size[64];
+  std::snprintf(size, sizeof size, "%.2f MB", ec ? 0.0 : static_cast<double>(bytes) / 1e6);
+  std::cout << "Wrote:\n  " << path.string() << " (" << size << ", opens offline from file://)\n";
+}
+
+}  // namespace attiguard::cli

@@ -1,0 +1,15 @@
+#pragma once
+/// @file ephemeris_check.hpp
+/// The validation of the optional `[ephemeris]` table by the kind parsers (docs/interop.md,
+/// "Scenario keys"; implemented with parse_ephemeris in ephemeris_table.cpp). Includes the
+/// table reader, so only scenario/ uses it.
+
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+/// Reads and validates `[ephemeris]` of `root` when present (every key checked, unknown keys
+/// rejected): the kind parsers call it so that `attiguard check` and `run` report a bad key.
+void check_ephemeris_table(const TableReader& root);
+
+}  // namespace attiguard::scenario

@@ -1,0 +1,258 @@
+// attiguard viewer (docs/viewer.md): one page per result folder, opened from file:// with no
+// network. Reads the JSON of <script id="attiguard-data">, builds the scene of the folder's
+// kind, the time slider with play / pause / speed and the strips, and exposes its state as
+// window.attiguardView for the browser test (tests/viewer/view_test.mjs).
+import { loadData, series as seriesOf, decimationNote, indexAt } from './data.js';
+import { makeRenderer, BACKGROUND, THREE } from './scene.js';
+import { attitudeScene, insetScene, quaternions } from './attitude.js';
+import { pathScene } from './path.js';
+import { reachScene } from './reach.js';
+import { campaignView } from './campaign.js';
+import { makeStrip } from './strips.js';
+
+const STYLE = `
+body { font-family: sans-serif; margin: 0; background: #eef1f6; color: #222; }
+header { padding: 8px 14px; background: #24324a; color: #fff; }
+header h1 { font-size: 18px; margin: 0 0 2px 0; }
+header .sub { font-size: 13px; opacity: 0.85; }
+#wrap { display: flex; gap: 10px; padding: 10px; }
+#scene { position: relative; }
+#legend { font-size: 12px; max-width: 330px; line-height: 1.4; }
+#legend li { margin-bottom: 4px; }
+.controls { padding: 4px 10px; font-size: 13px; display: flex; align-items: center; gap: 8px; }
+#time-slider { width: 600px; }
+.strip canvas { display: block; margin: 4px 10px; border: 1px solid #ccd; width: 900px; }
+.campaign { padding: 10px; }
+.campaign canvas { border: 1px solid #ccd; background: #fff; }
+.detail { font-size: 12px; background: #fff; padding: 6px; max-height: 260px; overflow: auto; }
+.note { font-size: 12px; color: #555; padding: 0 10px; }
+`;
+
+const SCENE_W = 900;
+const SCENE_H = 560;
+
+function el(tag, attrs = {}, text = '') {
+  const e = document.createElement(tag);
+  Object.assign(e, attrs);
+  if (text) e.textContent = text;
+  return e;
+}
+
+function headline(data) {
+  const s = data.summary || {};
+  const parts = [`kind ${data.kind}`];
+  if (s.outcome) parts.push(`outcome: ${s.outcome}${s.outcome_reason ? ' (' + s.outcome_reason + ')' : ''}`);
+  if (data.kind === 'reach') {
+    parts.push(`verdict: ${s.verdict}`);
+    parts.push(`first unprovable time: ${s.first_failure_time === null || s.first_failure_time === undefined ? 'none (proved over the horizon ' + s.horizon + ' s)' : s.first_failure_time + ' s'}`);
+  }
+  if (s.constraints_satisfied !== undefined) parts.push(`constraints satisfied: ${s.constraints_satisfied}`);
+  if (s.min_pointing_margin !== undefined) parts.push(`min pointing margin ${(+s.min_pointing_margin).toPrecision(4)}`);
+  if (data.kind === 'campaign') parts.push(`runs ${s.runs_completed} / ${s.runs_requested}, ok ${s.ok}, violations ${s.violations}`);
+  return parts.join(' · ');
+}
+
+/** The strips of a flight trajectory: V vs Γ, margins, torques (whichever columns exist). */
+function flightStrips(parent, s, t) {
+  const strips = [];
+  const add = (title, names, opts) => {
+    const lines = names.filter((n) => s.has(n)).map((n) => ({ label: n, values: s.col(n) }));
+    if (lines.length) strips.push(makeStrip(parent, t, title, lines, opts));
+  };
+  add('Lyapunov function V and threshold Γ (PET-ERG paper (5)) [J]', ['V', 'gamma']);
+  const margins = s.columns.filter((c) => /^margin_\d+$/.test(c) || c === 'min_margin');
+  add('pointing margins a_cᵀ R a_b − cos θ_c (≥ 0: satisfied) [–]', margins, { zero: true });
+  if (s.has('tau_norm')) add('torque ‖τ‖ [N m]', ['tau_norm']);
+  else add('body torque τ_b [N m]', ['tau_x', 'tau_y', 'tau_z']);
+  add('main-engine thrust [N]', ['thrust']);
+  add('RCT thrusters [N]', ['rct_1', 'rct_2', 'rct_3', 'rct_4', 'rct_5', 'rct_6']);
+  return strips;
+}
+
+function reachStrips(parent, series) {
+  const strips = [];
+  const tube = series('tube');
+  if (tube) {
+    const t = tube.col('t0');
+    const k = ['x', 'y', 'z'];
+    const lines = [];
+    k.forEach((a) => {
+      lines.push({ label: `ω_${a} lo`, values: tube.col(`omega_lo_${a}`) });
+      lines.push({ label: `ω_${a} hi`, values: tube.col(`omega_hi_${a}`) });
+    });
+    strips.push(makeStrip(parent, t, 'ω tube: componentwise bounds of ω_b (tube.csv) [rad/s]', lines, { height: 170 }));
+    const steps = series('steps');
+    if (steps) strips.push(makeStrip(parent, steps.col('t'), 'attitude radius of the ball (steps.csv) [rad]', [{ label: 'attitude_radius', values: steps.col('attitude_radius') }], { zero: true }));
+  }
+  return strips;
+}
+
+function main() {
+  const data = loadData();
+  const series = (name) => seriesOf(data, name);
+  document.title = `attiguard view: ${data.name} (${data.kind})`;
+  const style = document.createElement('style');
+  style.textContent = STYLE;
+  document.head.appendChild(style);
+  const header = el('header');
+  header.append(el('h1', {}, `${data.name}`), el('div', { className: 'sub' }, headline(data)));
+  document.body.appendChild(header);
+
+  const api = { ready: false, kind: data.kind, name: data.name, errors: [] };
+  window.attiguardView = api;
+
+  if (data.kind === 'campaign') {
+    const view = campaignView(document.body, data, series);
+    api.canvas = view.canvas;
+    api.canvasStats = () => canvasStats(view.canvas, [255, 255, 255]);
+    api.ready = true;
+    return;
+  }
+
+  const traj = series('trajectory');
+  const wrap = el('div', { id: 'wrap' });
+  const sceneBox = el('div', { id: 'scene' });
+  const legendBox = el('ul', { id: 'legend' });
+  wrap.append(sceneBox, legendBox);
+  document.body.appendChild(wrap);
+  const renderer = makeRenderer(sceneBox, SCENE_W, SCENE_H);
+  renderer.domElement.id = 'scene-canvas';
+
+  const t = traj.col('t');
+  const q = quaternions(traj, 'q_w', 'q_x', 'q_y', 'q_z');
+  let main = null;
+  let inset = null;
+  if (data.kind === 'waypoint' || data.kind === 'mission') {
+    main = pathScene(renderer, traj, data.summary, q);
+    inset = insetScene(renderer, q, data.kind === 'mission' ? data.summary : null);
+  } else if (data.kind === 'reach') {
+    main = reachScene(renderer, data, series, q);
+    inset = insetScene(renderer, q, null);
+  } else {
+    main = attitudeScene(renderer, traj, data.summary);
+  }
+  const legend = [...main.legend];
+  if (inset) legend.push('inset (lower right): the body attitude R(t) with its axes; orange: main-engine axis x_b');
+  legend.push(decimationNote(traj));
+  for (const n of ['boundary', 'samples', 'tube']) if (series(n)) legend.push(decimationNote(series(n)));
+  legend.push('units: SI (s, m, rad, N m); drag to turn, wheel to zoom');
+  for (const l of legend) legendBox.appendChild(el('li', { innerHTML: l }));
+
+  // Controls: slider over the displayed samples' times, play / pause, speed.
+  const controls = el('div', { className: 'controls' });
+  const play = el('button', { id: 'play' }, 'play');
+  const speed = el('select', { id: 'speed' });
+  const duration = t[t.length - 1] - t[0];
+  for (const f of [0.25, 1, 4, 16]) speed.add(new Option(`speed ${f}× (the run in ${(20 / f).toFixed(0)} s)`, String(f)));
+  speed.value = '1';
+  const slider = el('input', { id: 'time-slider', type: 'range', min: String(t[0]), max: String(t[t.length - 1]), step: 'any', value: String(t[0]) });
+  const timeLabel = el('span', { id: 'time-label' });
+  controls.append(play, speed, slider, timeLabel);
+  document.body.appendChild(controls);
+  const stripsBox = el('div', { id: 'strips' });
+  document.body.appendChild(stripsBox);
+  const strips = data.kind === 'reach' ? reachStrips(stripsBox, series) : flightStrips(stripsBox, traj, t);
+
+  let index = 0;
+  let time = t[0];
+  function render() {
+    renderer.setViewport(0, 0, SCENE_W, SCENE_H);
+    renderer.setScissorTest(false);
+    renderer.clear();
+    main.camera.aspect = SCENE_W / SCENE_H;
+    main.camera.updateProjectionMatrix();
+    renderer.render(main.scene, main.camera);
+    if (inset) {
+      const w = 260;
+      const h = 200;
+      renderer.setScissorTest(true);
+      renderer.setScissor(SCENE_W - w - 6, 6, w, h);
+      renderer.setViewport(SCENE_W - w - 6, 6, w, h);
+      renderer.setClearColor(0xffffff, 1);
+      renderer.clear();
+      renderer.setClearColor(BACKGROUND, 1);
+      inset.camera.aspect = w / h;
+      inset.camera.updateProjectionMatrix();
+      renderer.render(inset.scene, inset.camera);
+      renderer.setScissorTest(false);
+    }
+  }
+  function setTime(value) {
+    index = indexAt(t, value);
+    time = t[index];
+    main.update(index, time);
+    if (inset) inset.update(index, time);
+    slider.value = String(time);
+    timeLabel.textContent = `t = ${time.toFixed(3)} s of ${t[t.length - 1]} s (sample ${index + 1}/${t.length})`;
+    for (const s of strips) s.draw(time);
+    render();
+  }
+  slider.addEventListener('input', () => setTime(parseFloat(slider.value)));
+  main.controls.addEventListener('change', render);
+  if (inset) inset.controls.enabled = false;
+
+  let playing = false;
+  let last = 0;
+  function frame(ts) {
+    if (!playing) return;
+    const dt = last ? (ts - last) / 1000 : 0;
+    last = ts;
+    let next = time + dt * parseFloat(speed.value) * duration * 0.05;
+    if (next >= t[t.length - 1]) {
+      next = t[t.length - 1];
+      playing = false;
+      play.textContent = 'play';
+    }
+    setTime(next);
+    if (playing) requestAnimationFrame(frame);
+  }
+  play.addEventListener('click', () => {
+    playing = !playing;
+    play.textContent = playing ? 'pause' : 'play';
+    last = 0;
+    if (playing) {
+      if (time >= t[t.length - 1]) setTime(t[0]);
+      requestAnimationFrame(frame);
+    }
+  });
+
+  setTime(t[0]);
+  Object.assign(api, {
+    setTime,
+    canvas: renderer.domElement,
+    state: () => {
+      const b = (main.bodyObject || inset.bodyObject).quaternion;
+      return { t: time, index, body_q: [b.w, b.x, b.y, b.z], rows_shown: t.length };
+    },
+    canvasStats: () => canvasStats(renderer.domElement, [0xf4, 0xf6, 0xfa]),
+    ready: true,
+  });
+}
+
+/** Fraction of pixels of a canvas that differ from the background, and the colours seen. */
+function canvasStats(canvas, bg) {
+  const c = document.createElement('canvas');
+  c.width = canvas.width;
+  c.height = canvas.height;
+  const ctx = c.getContext('2d');
+  ctx.drawImage(canvas, 0, 0);
+  const px = ctx.getImageData(0, 0, c.width, c.height).data;
+  let differ = 0;
+  const colours = new Set();
+  for (let i = 0; i < px.length; i += 4) {
+    const d = Math.abs(px[i] - bg[0]) + Math.abs(px[i + 1] - bg[1]) + Math.abs(px[i + 2] - bg[2]);
+    if (d > 30) differ++;
+    if (colours.size < 5000) colours.add((px[i] << 16) | (px[i + 1] << 8) | px[i + 2]);
+  }
+  return { nonBackground: differ / (px.length / 4), colours: colours.size };
+}
+
+try {
+  main();
+} catch (e) {
+  console.error('attiguard viewer: ' + (e && e.stack ? e.stack : e));
+  const api = window.attiguardView || {};
+  api.failed = String(e);
+  window.attiguardView = api;
+}
+export { THREE };

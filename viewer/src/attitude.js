@@ -22,7 +22,7 @@ export function quaternions(s, w, x, y, z) {
  * {scene, camera, controls, update(i), bodyObject, legend}.
  */
 export function attitudeScene(renderer, s, summary) {
-  const view = makeView(renderer, 7.5);
+  const view = makeView(renderer, 5.6);
   const { scene } = view;
   const legend = [];
   scene.add(axes(SPHERE * 1.2, 'i', 0.55));
@@ -84,7 +84,7 @@ export function attitudeScene(renderer, s, summary) {
 
 /** A small attitude-only scene (inset of waypoint / reach): the body and the inertial axes. */
 export function insetScene(renderer, q, summary) {
-  const view = makeView(renderer, 6.5);
+  const view = makeView(renderer, 4.2);
   view.scene.add(axes(1.6, 'i', 0.5));
   if (summary && summary.cones) {
     view.scene.add(celestialSphere(SPHERE));

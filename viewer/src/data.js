@@ -23,7 +23,7 @@ export function decimationNote(s) {
   if (!s) return '';
   if (s.stride <= 1 && s.rows_selected === s.rows_total) return `${s.file}: all ${s.rows_total} rows`;
   const sel = s.rows_selected !== s.rows_total ? ` (${s.rows_selected} selected)` : '';
-  return `${s.file}: ${s.rows_shown} of ${s.rows_total} rows${sel} shown, every ${s.stride}th (decimated for display, never truncated: the last row is kept)`;
+  return `${s.file}: ${s.rows_shown} of ${s.rows_total} rows${sel} shown, every k-th row with k = ${s.stride} (decimated for display, never truncated: the last row is kept)`;
 }
 
 /** Index of the last sample with t[i] <= time (binary search; 0 before the first). */

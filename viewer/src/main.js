@@ -30,6 +30,10 @@ header .sub { font-size: 13px; opacity: 0.85; }
 
 const SCENE_W = 900;
 const SCENE_H = 560;
+const INSET_W = 260;
+const INSET_H = 200;
+/** The inset's rectangle in canvas pixels (top-left origin). */
+const INSET_RECT = { x: SCENE_W - INSET_W - 6, y: SCENE_H - INSET_H - 6, w: INSET_W, h: INSET_H };
 
 function el(tag, attrs = {}, text = '') {
   const e = document.createElement(tag);
@@ -163,12 +167,12 @@ function main() {
     main.camera.updateProjectionMatrix();
     renderer.render(main.scene, main.camera);
     if (inset) {
-      const w = 260;
-      const h = 200;
+      const w = INSET_W;
+      const h = INSET_H;
       renderer.setScissorTest(true);
       renderer.setScissor(SCENE_W - w - 6, 6, w, h);
       renderer.setViewport(SCENE_W - w - 6, 6, w, h);
-      renderer.setClearColor(0xffffff, 1);
+      renderer.setClearColor(0xe4e9f1, 1);
       renderer.clear();
       renderer.setClearColor(BACKGROUND, 1);
       inset.camera.aspect = w / h;
@@ -224,13 +228,13 @@ function main() {
       const b = (main.bodyObject || inset.bodyObject).quaternion;
       return { t: time, index, body_q: [b.w, b.x, b.y, b.z], rows_shown: t.length };
     },
-    canvasStats: () => canvasStats(renderer.domElement, [0xf4, 0xf6, 0xfa]),
+    canvasStats: () => canvasStats(renderer.domElement, [0xf4, 0xf6, 0xfa], inset ? INSET_RECT : null),
     ready: true,
   });
 }
 
-/** Fraction of pixels of a canvas that differ from the background, and the colours seen. */
-function canvasStats(canvas, bg) {
+/** Fraction of pixels of a canvas (outside `exclude`, the inset) that differ from the background, and the colours seen. */
+function canvasStats(canvas, bg, exclude = null) {
   const c = document.createElement('canvas');
   c.width = canvas.width;
   c.height = canvas.height;
@@ -239,12 +243,17 @@ function canvasStats(canvas, bg) {
   const px = ctx.getImageData(0, 0, c.width, c.height).data;
   let differ = 0;
   const colours = new Set();
+  let counted = 0;
   for (let i = 0; i < px.length; i += 4) {
+    const x = (i / 4) % c.width;
+    const y = Math.floor(i / 4 / c.width);
+    if (exclude && x >= exclude.x && x < exclude.x + exclude.w && y >= exclude.y && y < exclude.y + exclude.h) continue;
+    counted++;
     const d = Math.abs(px[i] - bg[0]) + Math.abs(px[i + 1] - bg[1]) + Math.abs(px[i + 2] - bg[2]);
     if (d > 30) differ++;
     if (colours.size < 5000) colours.add((px[i] << 16) | (px[i + 1] << 8) | px[i + 2]);
   }
-  return { nonBackground: differ / (px.length / 4), colours: colours.size };
+  return { nonBackground: differ / counted, colours: colours.size };
 }
 
 try {

@@ -1,7 +1,7 @@
 // The path scene of kinds waypoint and mission (docs/viewer.md): the 3-D path coloured by
 // guidance mode, the waypoints, the spacecraft with its thrust direction (main engine along
 // +x_b, the nominal axis) at the current time.
-import { THREE, axes, label, makeView, vectorArrow } from './scene.js';
+import { THREE, axes, frame, label, makeView, vectorArrow } from './scene.js';
 
 const MODE_COLORS = [0x1f77b4, 0xd62728, 0x2ca02c, 0xff7f0e, 0x9467bd, 0x8c564b, 0x7f7f7f, 0xe377c2];
 
@@ -55,7 +55,7 @@ export function pathScene(renderer, s, summary, q) {
   start.position.copy(P(0));
   scene.add(start);
   wps.forEach((w, k) => {
-    const m = new THREE.Mesh(new THREE.SphereGeometry(0.12, 16, 10), new THREE.MeshStandardMaterial({ color: 0x2ca02c }));
+    const m = new THREE.Mesh(new THREE.SphereGeometry(0.16, 20, 12), new THREE.MeshStandardMaterial({ color: 0x2ca02c }));
     m.position.copy(w);
     scene.add(m);
     const l = label(`waypoint ${k}`, '#1b6e1b', 0.25);
@@ -63,9 +63,20 @@ export function pathScene(renderer, s, summary, q) {
     scene.add(l);
   });
 
+  // A faint grid in the x-y plane of the path (10 × 10 cells) for depth.
+  const grid = new THREE.GridHelper(8, 16, 0xb8c0cc, 0xd6dbe3);
+  grid.rotation.x = Math.PI / 2;
+  grid.position.z = Math.min(...pz) * scale;
+  scene.add(grid);
+  legend.push(`grid: 1 cell = ${(0.5 / scale).toPrecision(3)} m, in the plane z_i = ${Math.min(...pz).toPrecision(3)} m`);
+  const pathPoints = [];
+  for (let i = 0; i < s.n; i += Math.max(1, Math.floor(s.n / 200))) pathPoints.push(P(i));
+  wps.forEach((w) => pathPoints.push(w));
+  frame(view, pathPoints, 1.0);
+
   const craft = new THREE.Group();
-  craft.add(new THREE.Mesh(new THREE.BoxGeometry(0.3, 0.2, 0.15), new THREE.MeshStandardMaterial({ color: 0x555e6e })));
-  craft.add(axes(0.45, 'b'));
+  craft.add(new THREE.Mesh(new THREE.BoxGeometry(0.36, 0.24, 0.18), new THREE.MeshStandardMaterial({ color: 0x555e6e })));
+  craft.add(axes(0.6, 'b'));
   scene.add(craft);
   const thrust = vectorArrow(0xff7f0e, 0.15);
   scene.add(thrust.object);

@@ -2,7 +2,7 @@
 // reach.json), the boundaries of the metric balls (boundary.csv, one point cloud per step,
 // coloured by time, the current step highlighted), the nominal trajectory and the sampled
 // trajectories (samples.csv).
-import { THREE, axes, label, makeView, polyline } from './scene.js';
+import { THREE, axes, frame, makeView, polyline } from './scene.js';
 
 const SCALE = 8; // scene units per radian
 
@@ -41,7 +41,7 @@ export function reachScene(renderer, data, series, q) {
     for (const [time, pts] of byT) {
       const geom = new THREE.BufferGeometry().setFromPoints(pts);
       c.setHSL(0.66 - 0.66 * (tmax > 0 ? time / tmax : 0), 0.8, 0.5);
-      const mat = new THREE.PointsMaterial({ color: c.clone(), size: 0.035, transparent: true, opacity: 0.35 });
+      const mat = new THREE.PointsMaterial({ color: c.clone(), size: 0.05, transparent: true, opacity: 0.5 });
       const cloud = new THREE.Points(geom, mat);
       scene.add(cloud);
       steps.push({ time, cloud });
@@ -66,19 +66,17 @@ export function reachScene(renderer, data, series, q) {
     scene.add(polyline(q.map((x) => logQuaternion(x).multiplyScalar(SCALE)), 0x000000));
     legend.push('black: nominal trajectory log(R(t)); black dot: now');
   }
+  if (q) frame(view, q.map((x) => logQuaternion(x).multiplyScalar(SCALE)), 1.3);
   const now = new THREE.Mesh(new THREE.SphereGeometry(0.06, 12, 8), new THREE.MeshBasicMaterial({ color: 0x000000 }));
   scene.add(now);
-  const verdict = label(`verdict: ${data.summary.verdict}`, data.summary.verdict === 'safe' ? '#1b6e1b' : '#b22222', 0.3);
-  verdict.position.set(0, 0, 2.2);
-  scene.add(verdict);
 
   function update(i, time) {
     if (q) now.position.copy(logQuaternion(q[i]).multiplyScalar(SCALE));
     let best = null;
     for (const s of steps) if (s.time <= time + 1e-12 && (!best || s.time > best.time)) best = s;
     for (const s of steps) {
-      s.cloud.material.opacity = s === best ? 1.0 : 0.25;
-      s.cloud.material.size = s === best ? 0.07 : 0.03;
+      s.cloud.material.opacity = s === best ? 1.0 : 0.3;
+      s.cloud.material.size = s === best ? 0.11 : 0.045;
     }
   }
   return { ...view, update, legend };

@@ -33,6 +33,21 @@ export function makeView(renderer, distance, up = [0, 0, 1]) {
   return { scene, camera, controls };
 }
 
+/** Points the view's camera at the box of `points` (Vector3[]) from a fixed direction. */
+export function frame(view, points, margin = 1.6) {
+  const box = new THREE.Box3().setFromPoints(points);
+  const center = box.getCenter(new THREE.Vector3());
+  const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 0.5);
+  const dir = new THREE.Vector3(0.8, -1.0, 0.6).normalize();
+  const dist = (radius * margin) / Math.sin((view.camera.fov * Math.PI) / 360);
+  view.camera.position.copy(center.clone().add(dir.multiplyScalar(dist)));
+  view.camera.near = dist / 100;
+  view.camera.far = dist * 100;
+  view.controls.target.copy(center);
+  view.camera.lookAt(center);
+  view.controls.update();
+}
+
 /** A text label as a sprite (canvas texture, no network). */
 export function label(text, color = '#222222', size = 0.18) {
   const c = document.createElement('canvas');

@@ -3,6 +3,8 @@
 // click on a run shows its row and how to replay it (a link to run_K/view.html when replayed
 // with --view); the percentile envelopes of retained time series when the campaign kept them.
 
+import { makeStrip } from './strips.js';
+
 const FIXED = new Set(['run', 'seed', 'attempts', 'status', 'reason', 'outcome', 'outcome_reason']);
 
 export function campaignView(root, data, series) {
@@ -118,6 +120,38 @@ export function campaignView(root, data, series) {
       detail.appendChild(a);
     }
     window.attiguardView.selectedRun = k;
+  }
+
+  // Envelopes of the retained time series (DIR/retained.h5): min, 1 %, 50 %, 99 %, max over
+  // the runs at each t, the worst runs in red; a button per worst run shows its row.
+  if (data.envelopes) {
+    const env = data.envelopes;
+    const head = document.createElement('h3');
+    head.textContent = `Retained time series (retained.h5): percentile envelopes over ${env.runs} runs`;
+    box.appendChild(head);
+    for (const c of env.columns) {
+      const counts = c.count.filter((x) => x !== null);
+      const lines = [
+        { label: 'min', values: c.min, color: '#7f7f7f' },
+        { label: 'p1', values: c.p1, color: '#1f77b4' },
+        { label: 'p50', values: c.p50, color: '#000000' },
+        { label: 'p99', values: c.p99, color: '#1f77b4' },
+        { label: 'max', values: c.max, color: '#7f7f7f' },
+        ...c.worst.map((w, k) => ({ label: `run ${w.run}`, values: w.values, color: ['#d62728', '#e377c2', '#ff7f0e'][k % 3] })),
+      ];
+      const title = `${c.column}: envelopes over ${Math.min(...counts)}–${Math.max(...counts)} runs per t; red: worst runs (${c.column.includes('margin') ? 'lowest minimum' : 'highest maximum'})`;
+      const strip = makeStrip(box, env.t, title, lines, { height: 170 });
+      strip.draw(NaN);
+      const buttons = document.createElement('div');
+      buttons.className = 'controls';
+      for (const w of c.worst) {
+        const b = document.createElement('button');
+        b.textContent = `run ${w.run}`;
+        b.onclick = () => showRun(w.run);
+        buttons.appendChild(b);
+      }
+      box.appendChild(buttons);
+    }
   }
 
   selX.onchange = draw;

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <string_view>
 #include <thread>
 
 #include "attiguard/campaign/csv_format.hpp"
+#include "attiguard/campaign/retain_sink.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 
@@ -64,7 +66,18 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
   RunOptions options;
   options.out_dir = scratch;
   options.write_files = false;
-  const nlohmann::json summary = c.handler->run(c.nominal, options);
+  campaign::RetainSink retained(c.plan.retain);  // validates the retained columns
+  if (c.plan.retain.enabled()) options.rows = &retained;
+  nlohmann::json summary;
+  try {
+    summary = c.handler->run(c.nominal, options);
+  } catch (const InputError& e) {
+    if (std::string_view(e.what()).starts_with("[campaign] retain")) {
+      throw InputError(path.string() + ": " + e.what());
+    }
+    throw;
+  }
+  c.retain_times = retained.times();
   for (const auto& [key, value] : summary.items()) {
     if (is_figure(key, value)) c.figures.push_back(key);
   }
@@ -99,8 +112,13 @@ RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
       }
     }
   }
+  campaign::RetainSink retained(c.plan.retain);
+  RunOptions run_options = options;
+  if (c.plan.retain.enabled()) run_options.rows = &retained;
   try {
-    r.summary = c.handler->run(doc, options);
+    r.summary = c.handler->run(doc, run_options);
+    r.retained = retained.values();
+    r.retained_samples = retained.samples();
   } catch (const std::exception& e) {
     r.status = RunStatus::failed;
     r.reason = one_line(e.what());

@@ -27,6 +27,8 @@ struct Campaign {
   /// Summary figures recorded per run (numeric and boolean top-level keys of the nominal run's
   /// summary, sorted, without wall_time_s and output_rows).
   std::vector<std::string> figures;
+  /// t_k of the retained samples of the nominal run (plan.retain; docs/campaigns.md).
+  std::vector<double> retain_times;
 };
 
 /// Outcome of one run.
@@ -43,6 +45,8 @@ struct RunRecord {
   std::vector<double> values;      ///< dispersed values (dispersion_columns order)
   nlohmann::json summary;          ///< the kind's summary (null unless ok)
   bool violation{false};           ///< a "*_satisfied" summary flag is false
+  std::vector<double> retained;    ///< retained columns, column-major (campaign::RetainSink)
+  std::size_t retained_samples{0}; ///< samples per retained column
 };
 
 /// Loads the scenario file, reads its dispersions, checks the nominal scenario with its kind, and

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "attiguard/campaign/csv_format.hpp"
+#include "attiguard/campaign/envelopes.hpp"
+#include "attiguard/campaign/retained_file.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/partial_file.hpp"
 
@@ -95,7 +97,14 @@ std::optional<json> read_series(const fs::path& path, std::size_t max_rows, Sele
   json data = json::object();
   for (std::size_t c = 0; c < columns.size(); ++c) {
     json values = json::array();
-    for (std::size_t r : kept) values.push_back(c < rows[r].size() ? cell(rows[r][c]) : json(nullptr));
+    const bool text = columns[c] == "seed";  // 64-bit seeds: exact as text, not as a double
+    for (std::size_t r : kept) {
+      if (c >= rows[r].size()) {
+        values.push_back(nullptr);
+      } else {
+        values.push_back(text ? json(rows[r][c]) : cell(rows[r][c]));
+      }
+    }
     data[columns[c]] = std::move(values);
   }
   json s;
@@ -127,6 +136,48 @@ std::string script_safe(std::string_view text) {
   return out;
 }
 
+/// A series of numbers for the page (9 significant digits, null for NaN).
+json numbers(const std::vector<double>& v) {
+  json out = json::array();
+  for (double x : v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", x);
+    out.push_back(cell(buf));
+  }
+  return out;
+}
+
+/// The envelopes of retained.h5 (campaign::envelope) and the worst runs' series.
+json envelopes_json(const fs::path& path) {
+  const campaign::RetainedSeries series = campaign::read_retained(path);
+  json out;
+  out["t"] = numbers(series.t);
+  out["runs"] = series.runs;
+  json cols = json::array();
+  for (std::size_t c = 0; c < series.columns.size(); ++c) {
+    const campaign::Envelope e = campaign::envelope(series, c);
+    json j;
+    j["column"] = e.column;
+    j["min"] = numbers(e.min);
+    j["p1"] = numbers(e.p1);
+    j["p50"] = numbers(e.p50);
+    j["p99"] = numbers(e.p99);
+    j["max"] = numbers(e.max);
+    j["count"] = numbers(e.count);
+    json worst = json::array();
+    const std::size_t S = series.t.size();
+    for (std::size_t k : e.worst) {
+      std::vector<double> run(series.values[c].begin() + static_cast<std::ptrdiff_t>(k * S),
+                              series.values[c].begin() + static_cast<std::ptrdiff_t>((k + 1) * S));
+      worst.push_back({{"run", k}, {"values", numbers(run)}});
+    }
+    j["worst"] = worst;
+    cols.push_back(j);
+  }
+  out["columns"] = cols;
+  return out;
+}
+
 }  // namespace
 
 json view_data(const fs::path& dir) {
@@ -148,6 +199,7 @@ json view_data(const fs::path& dir) {
       }
     }
     page["replayed"] = runs;
+    if (fs::is_regular_file(dir / "retained.h5", ec)) page["envelopes"] = envelopes_json(dir / "retained.h5");
   } else if (fs::is_regular_file(dir / "reach.json", ec)) {
     page["kind"] = "reach";
     page["summary"] = read_json_file(dir / "reach.json");

@@ -19,6 +19,8 @@
 
 #include "attiguard/campaign/aggregation.hpp"
 #include "attiguard/campaign/csv_format.hpp"
+#include "attiguard/campaign/envelopes.hpp"
+#include "attiguard/campaign/retained_file.hpp"
 #include "attiguard/campaign/row_gather.hpp"
 #include "attiguard/campaign/progress.hpp"
 #include "attiguard/app/campaign_runner.hpp"
@@ -131,8 +133,21 @@ void campaign_command(const CampaignArguments& args) {
   const auto start = std::chrono::steady_clock::now();
   campaign::Progress progress(std::cout, static_cast<long>(share.size()),
                               world.root() && ::isatty(STDOUT_FILENO) == 1);
+  // [campaign] retain: the retained time series of every run in DIR/retained.h5 (one process).
+  std::optional<campaign::RetainedFile> retained;
+  if (c.plan.retain.enabled()) {
+    if (world.size > 1) {
+      throw InputError(args.scenario.string() + ": [campaign] retain is written by one process: run "
+                       "this campaign without mpirun (use --threads)");
+    }
+    retained.emplace(args.out_dir / "retained.h5", c.plan.retain.columns, c.retain_times,
+                     static_cast<std::size_t>(args.runs), c.plan.retain.interval, args.resume);
+  }
   std::map<long, std::string> mine;
   app::run_many(c, share, args.threads, scratch, g_stop, [&](const app::RunRecord& r) {
+    if (retained && r.status == app::RunStatus::ok) {
+      retained->write_run(static_cast<std::size_t>(r.index), r.retained, r.retained_samples);
+    }
     std::string row = app::csv_row(c, r);
     if (appender) appender->append(row);
     mine.emplace(r.index, std::move(row));
@@ -179,6 +194,15 @@ void campaign_command(const CampaignArguments& args) {
             << " with a constraint violation\n";
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
             << (args.out_dir / "campaign.json").string() << '\n';
+  if (retained) {
+    retained.reset();  // closes the file
+    const auto path = args.out_dir / "retained.h5";
+    const campaign::RetainedSeries series = campaign::read_retained(path);
+    std::vector<campaign::Envelope> envelopes;
+    for (std::size_t col = 0; col < series.columns.size(); ++col) envelopes.push_back(campaign::envelope(series, col));
+    campaign::write_envelopes(path, envelopes);
+    std::cout << "  " << path.string() << '\n';
+  }
   if (args.plot) {
     const PlotOutcome p = plot_results("campaign", args.out_dir);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';

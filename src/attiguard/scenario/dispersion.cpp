@@ -1,4 +1,5 @@
 #include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/retain_keys.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <array>
@@ -195,6 +196,7 @@ DispersionPlan read_dispersions(const scenario::Document& doc) {
   }
   if (const auto c = root.optional_table("campaign")) {
     plan.max_attempts = c->integer_or("max_attempts", 1, 1, 1000000);
+    plan.retain = read_retain(*c, doc);
   }
   table.finish();
   if (const auto c = root.optional_table("campaign")) c->finish();

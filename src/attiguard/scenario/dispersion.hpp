@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "attiguard/campaign/retain_plan.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/scenario/document.hpp"
 
@@ -52,6 +53,7 @@ struct Dispersion {
 struct DispersionPlan {
   std::vector<Dispersion> items;   ///< in the order of the file (the parser keeps keys sorted)
   long max_attempts{1};            ///< [campaign] max_attempts: draws until admissible
+  campaign::RetainPlan retain;     ///< [campaign] retain, retain_interval (retain_keys.hpp)
 };
 
 /// Reads `[dispersions]` (required, non-empty) and `[campaign]` (optional) of `doc`, checks every

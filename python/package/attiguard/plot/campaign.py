@@ -6,7 +6,11 @@ Reads DIR/runs.csv and DIR/campaign.json and writes:
   main figures (min_pointing_margin, max_torque_norm, final_attitude_error, delta_v, ...: the
   first of a preferred list present in runs.csv, then other varying figures);
 - ``campaign_scatter.png``: the first margin against each dispersed value (one panel per
-  dispersed column, at most 12), violating runs in red.
+  dispersed column, at most 12), violating runs in red;
+- ``campaign_envelopes.png`` when the campaign retained time series (``[campaign] retain``,
+  DIR/retained.h5, read with python3-h5py): per retained column, the min, 1 %, 50 %, 99 % and
+  max envelopes against time (computed by attiguard, /envelopes/NAME) and the worst runs
+  (/worst/NAME) highlighted.
 """
 
 from __future__ import annotations
@@ -157,11 +161,61 @@ def scatter(run: CampaignRun) -> Path | None:
     return path
 
 
+def envelopes(run: CampaignRun) -> Path | None:
+    """campaign_envelopes.png from DIR/retained.h5 (docs/campaigns.md, "Retained time series")."""
+    path = run.dir / "retained.h5"
+    if not path.is_file():
+        return None
+    try:
+        import h5py
+    except ImportError:
+        import sys
+        print(f"attiguard.plot: {path}: python3-h5py is not installed: no campaign_envelopes.png "
+              "(apt-get install python3-h5py)", file=sys.stderr)
+        return None
+    with h5py.File(path, "r") as f:
+        t = np.asarray(f["t"])
+        if "envelopes" not in f:
+            raise PlotInputError(f"{path}: no /envelopes (the campaign was interrupted: resume it)")
+        names = list(f["envelopes"].keys())
+        env = {n: np.asarray(f["envelopes"][n]) for n in names}
+        worst = {n: [int(k) for k in np.asarray(f["worst"][n])] for n in names}
+        worst_rows = {n: [np.asarray(f["series"][n][k, :]) for k in worst[n]] for n in names}
+    fig, axes = _grid(max(1, len(names)))
+    for ax, n in zip(axes, names):
+        e = env[n]
+        ax.fill_between(t, e[0], e[4], color="tab:blue", alpha=0.15, label="min – max")
+        ax.fill_between(t, e[1], e[3], color="tab:blue", alpha=0.35, label="1 % – 99 %")
+        ax.plot(t, e[2], color="black", lw=1.0, label="median")
+        for k, row in zip(worst[n], worst_rows[n]):
+            ax.plot(t, row, color="tab:red", lw=0.8, alpha=0.8)
+        if worst[n]:
+            ax.plot([], [], color="tab:red", lw=0.8,
+                    label="worst runs " + ", ".join(str(k) for k in worst[n]))
+        if "margin" in n:
+            ax.axhline(0.0, color="tab:red", lw=0.6, ls="--")
+        counts = e[5][np.isfinite(e[5])]
+        ax.set_title(f"{n} (over {int(counts.min()) if counts.size else 0}"
+                     f"–{int(counts.max()) if counts.size else 0} runs per t)", fontsize=9)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel(n)
+        ax.grid(True, alpha=0.4)
+        ax.legend(fontsize=7)
+    fig.suptitle(f"{run.name}: percentile envelopes of the retained time series")
+    out = run.dir / "campaign_envelopes.png"
+    fig.tight_layout()
+    fig.savefig(out)
+    return out
+
+
 def plot(run: CampaignRun) -> list[Path]:
     written = [histograms(run)]
     s = scatter(run)
     if s is not None:
         written.append(s)
+    e = envelopes(run)
+    if e is not None:
+        written.append(e)
     return written
 
 

@@ -1,0 +1,39 @@
+#pragma once
+/// @file retain_sink.hpp
+/// A row sink that keeps the retained columns of one run at t_k = k · interval
+/// (docs/campaigns.md, "Retained time series"): the first row with t ≥ t_k (to within 10⁻⁹ of
+/// the interval) gives sample k.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "attiguard/campaign/retain_plan.hpp"
+#include "attiguard/io/row_sink.hpp"
+
+namespace attiguard::campaign {
+
+class RetainSink final : public io::RowSink {
+ public:
+  explicit RetainSink(RetainPlan plan) : plan_(std::move(plan)) {}
+  /// Finds the retained columns; throws InputError "[campaign] retain: no column 'X' in the
+  /// trajectory of this kind (columns: …)" when one is missing.
+  void begin(const std::vector<std::string>& columns) override;
+  void row(std::span<const double> values) override;
+  /// Samples kept.
+  [[nodiscard]] std::size_t samples() const noexcept { return times_.size(); }
+  /// The kept values, column-major: values()[c * samples() + k].
+  [[nodiscard]] std::vector<double> values() const;
+  /// The sample times t_k.
+  [[nodiscard]] const std::vector<double>& times() const noexcept { return times_; }
+
+ private:
+  RetainPlan plan_;
+  std::vector<std::size_t> index_;
+  std::size_t t_index_{0};
+  std::vector<double> times_;
+  std::vector<std::vector<double>> kept_;  ///< per column
+};
+
+}  // namespace attiguard::campaign

@@ -14,7 +14,27 @@ packages=(
   python3 python3-matplotlib python3-numpy python3-pytest pybind11-dev python3-dev
   python3-venv python3-setuptools python3-wheel python3-mypy
   openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
+  libhdf5-dev python3-h5py   # campaign retained time series (docs/campaigns.md)
+  chromium                   # the browser test of the viewer (docs/viewer.md)
 )
+# node and npm bundle the viewer (docs/viewer.md): Debian's when the machine has no node.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
+
+# `npm ci` in viewer/: esbuild, three and puppeteer-core as pinned in viewer/package-lock.json
+# (skipped when node_modules matches the lock file already).
+install_viewer_packages() {
+  local viewer
+  viewer="$(cd "$(dirname "${BASH_SOURCE[0]}")/../viewer" && pwd)"
+  if [[ -f "$viewer/node_modules/.package-lock.json" &&
+        "$viewer/node_modules/.package-lock.json" -nt "$viewer/package-lock.json" ]]; then
+    echo "setup.sh: viewer/node_modules is up to date."
+    return
+  fi
+  echo "setup.sh: npm ci in viewer/"
+  (cd "$viewer" && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund)
+}
 
 # True when the package is installed ("install ok installed").
 is_installed() {
@@ -34,6 +54,7 @@ done
 
 if ((${#missing[@]} == 0)); then
   echo "setup.sh: all ${#packages[@]} system packages are already installed."
+  install_viewer_packages
   exit 0
 fi
 
@@ -60,4 +81,5 @@ for pkg in "${missing[@]}"; do
     exit 1
   fi
 done
+install_viewer_packages
 echo "setup.sh: done."

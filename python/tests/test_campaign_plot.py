@@ -30,3 +30,43 @@ def test_campaign_plots_are_written(tmp_path, capsys):
 
 def test_campaign_without_runs_is_a_usage_error(tmp_path):
     assert main(["campaign", str(tmp_path)]) == 2
+
+
+def _retained_file(path, runs=5, samples=4):
+    """A retained.h5 as `attiguard campaign` writes it (docs/campaigns.md, "Retained time series")."""
+    h5py = pytest.importorskip("h5py")
+    import numpy as np
+
+    t = np.arange(samples) * 0.5
+    series = np.array([[0.1 * (k + 1) + 0.01 * s for s in range(samples)] for k in range(runs)])
+    with h5py.File(path, "w") as f:
+        f["t"] = t
+        f["series/margin_0"] = series
+        env = np.vstack([series.min(0), series.min(0), np.median(series, 0), series.max(0),
+                         series.max(0), np.full(samples, runs)])
+        f["envelopes/margin_0"] = env
+        f["worst/margin_0"] = np.array([0, 1], dtype=np.int64)
+
+
+def test_campaign_envelopes_are_drawn_from_the_retained_file(tmp_path, capsys):
+    (tmp_path / "runs.csv").write_text(HEADER + "\n" + "\n".join(ROWS) + "\n")
+    (tmp_path / "campaign.json").write_text(json.dumps({"scenario": "t.toml", "violations": 1}))
+    _retained_file(tmp_path / "retained.h5")
+    assert main(["campaign", str(tmp_path)]) == 0
+    written = [p.rsplit("/", 1)[-1] for p in capsys.readouterr().out.split()]
+    assert written == ["campaign_histograms.png", "campaign_scatter.png", "campaign_envelopes.png"]
+    assert (tmp_path / "campaign_envelopes.png").stat().st_size > 1000
+
+
+def test_campaign_title_is_the_scenario_name_and_every_dispersed_column_gets_a_panel(tmp_path):
+    from attiguard.plot import campaign
+
+    names = [f"d{i}" for i in range(14)]  # more dispersed columns than the histogram panels
+    header = "run,seed,attempts,status,reason," + ",".join(names) + ",violation,min_pointing_margin"
+    rows = [f"{k},1,1,ok,," + ",".join(str(k * (i + 1)) for i in range(14)) + f",0,{0.1 * k}"
+            for k in range(4)]
+    (tmp_path / "runs.csv").write_text(header + "\n" + "\n".join(rows) + "\n")
+    (tmp_path / "campaign.json").write_text(json.dumps({"scenario": "my_campaign.toml"}))
+    run = campaign.load(tmp_path)
+    assert run.name == "my_campaign"
+    assert campaign._dispersed(run) == names

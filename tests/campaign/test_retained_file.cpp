@@ -1,17 +1,14 @@
-// campaign/retain_sink, campaign/retained_file, campaign/envelopes: the retained time series of
-// a campaign (docs/campaigns.md, "Retained time series"), and `attiguard campaign` writing them.
+// campaign/retained_file: DIR/retained.h5 written and read back, and `attiguard campaign`
+// writing it (docs/campaigns.md, "Retained time series").
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include "attiguard/campaign/envelopes.hpp"
-#include "attiguard/campaign/retain_sink.hpp"
 #include "attiguard/campaign/retained_file.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/csv_reader.hpp"
@@ -21,24 +18,6 @@ namespace attiguard::campaign {
 namespace {
 
 namespace fs = std::filesystem;
-
-TEST(RetainSink, KeepsTheFirstRowAtOrAfterEachMultipleOfTheInterval) {
-  RetainSink sink({{"b"}, 0.5});
-  sink.begin({"t", "a", "b"});
-  for (int i = 0; i <= 20; ++i) {
-    const double t = 0.1 * i;
-    const std::array<double, 3> row{t, -1.0, 10.0 * t};
-    sink.row(row);
-  }
-  ASSERT_EQ(sink.samples(), 5u);  // t = 0, 0.5, 1, 1.5, 2
-  const auto v = sink.values();
-  for (std::size_t k = 0; k < 5; ++k) {
-    EXPECT_DOUBLE_EQ(sink.times()[k], 0.5 * static_cast<double>(k));
-    EXPECT_NEAR(v[k], 5.0 * static_cast<double>(k), 1e-12);
-  }
-  RetainSink missing({{"nope"}, 1.0});
-  EXPECT_THROW(missing.begin({"t", "a"}), InputError);
-}
 
 TEST(RetainedFile, WritesRowsAsRunsFinishAndReadsThemBackWithNaNForMissingRuns) {
   const fs::path dir = test::fresh_dir("retained_file");
@@ -62,37 +41,19 @@ TEST(RetainedFile, WritesRowsAsRunsFinishAndReadsThemBackWithNaNForMissingRuns) 
   // --resume reopens a matching file and refuses another shape.
   EXPECT_NO_THROW(RetainedFile(path, {"x", "y"}, t, 4, 1.0, true));
   EXPECT_THROW(RetainedFile(path, {"x"}, t, 4, 1.0, true), InputError);
+  // A larger --runs on --resume keeps the rows written so far.
+  { RetainedFile extended(path, {"x", "y"}, t, 6, 1.0, true); }
+  const RetainedSeries e = read_retained(path);
+  EXPECT_EQ(e.runs, 6u);
+  EXPECT_EQ(e.values[1][2 * 3 + 1], 20.0);
+  EXPECT_TRUE(std::isnan(e.values[1][5 * 3 + 1]));
   fs::remove_all(dir);
-}
-
-TEST(Envelopes, PercentilesPerSampleOverTheRunsThatHaveAValueAndTheWorstRuns) {
-  RetainedSeries s;
-  s.t = {0.0, 1.0};
-  s.columns = {"min_margin"};
-  s.runs = 101;
-  s.values.assign(1, std::vector<double>(202, 0.0));
-  for (std::size_t k = 0; k < 101; ++k) {
-    s.values[0][k * 2 + 0] = static_cast<double>(k);        // 0 … 100
-    s.values[0][k * 2 + 1] = k == 7 ? NAN : 100.0 - static_cast<double>(k);
-  }
-  const Envelope e = envelope(s, 0, 2);
-  EXPECT_EQ(e.min[0], 0.0);
-  EXPECT_EQ(e.max[0], 100.0);
-  EXPECT_EQ(e.p50[0], 50.0);
-  EXPECT_EQ(e.p1[0], 1.0);
-  EXPECT_EQ(e.p99[0], 99.0);
-  EXPECT_EQ(e.count[0], 101.0);
-  EXPECT_EQ(e.count[1], 100.0);  // run 7 has no value at t = 1
-  // Margins: the worst runs have the lowest minimum over time (run 100 reaches 0 at t = 1).
-  ASSERT_EQ(e.worst.size(), 2u);
-  EXPECT_EQ(e.worst[0], 0u);
-  EXPECT_EQ(e.worst[1], 100u);
 }
 
 #ifdef ATTIGUARD_CLI_PATH
 TEST(RetainedFile, CampaignRetainsEachRunsColumnsAsItsReplayedTrajectoryHasThem) {
   const fs::path dir = test::fresh_dir("retain_cli");
-  const std::string scenario = std::string("'") + ATTIGUARD_SOURCE_DIR + "/examples/pet_erg_campaign.toml'";
+  const std::string scenario = std::string("'") + ATTIGUARD_SOURCE_DIR + "/examples/pet_erg_campaign_retained.toml'";
   const auto r = test::run_cli("campaign " + scenario + " --runs 6 --seed 3 --out '" + dir.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("retained.h5"), std::string::npos) << r.out;
@@ -115,7 +76,7 @@ TEST(RetainedFile, CampaignRetainsEachRunsColumnsAsItsReplayedTrajectoryHasThem)
   EXPECT_EQ(checked, 121u);
 
   // An unknown retained column is invalid input naming the key and the columns.
-  std::ofstream(dir / "bad.toml") << test::read_file(fs::path(ATTIGUARD_SOURCE_DIR) / "examples/pet_erg_campaign.toml")
+  std::ofstream(dir / "bad.toml") << test::read_file(fs::path(ATTIGUARD_SOURCE_DIR) / "examples/pet_erg_campaign_retained.toml")
                                   << "\n";
   std::string text = test::read_file(dir / "bad.toml");
   text.replace(text.find("\"margin_0\", "), 12, "\"margin_9\", ");

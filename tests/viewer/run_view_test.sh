@@ -24,7 +24,8 @@ cd "$src"
 "$cli" run examples/waypoint_paper.toml --out "$work/waypoint_paper" --view
 "$cli" run examples/mission_sun_constrained.toml --out "$work/mission_sun_constrained" --view
 "$cli" reach examples/conreach_paper.toml --out "$work/conreach_paper" --view
-"$cli" campaign examples/pet_erg_campaign.toml --runs 40 --seed 1 --out "$work/pet_erg_campaign" >/dev/null
+"$cli" campaign examples/pet_erg_campaign_retained.toml --runs 40 --seed 1 --out "$work/pet_erg_campaign" >/dev/null
+"$cli" campaign examples/pet_erg_campaign_retained.toml --seed 1 --out "$work/pet_erg_campaign" --replay 5 --view >/dev/null
 "$cli" view "$work/pet_erg_campaign"
 
 size=$(stat -c %s "$work/pet_erg_paper/view.html")
@@ -36,4 +37,4 @@ fi
 
 "$node" "$src/tests/viewer/view_test.mjs" "$src/viewer" "$work/screenshots" \
   "$work/pet_erg_paper" "$work/waypoint_paper" "$work/mission_sun_constrained" \
-  "$work/conreach_paper" "$work/pet_erg_campaign"
+  "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5"

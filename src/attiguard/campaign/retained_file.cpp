@@ -2,8 +2,10 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "attiguard/core/errors.hpp"
 
@@ -89,13 +91,17 @@ RetainedFile::RetainedFile(const std::filesystem::path& path, const std::vector<
     : samples_(times.size()), runs_(runs), path_(path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported as InputError
   std::error_code ec;
+  std::optional<RetainedSeries> carried;  // the rows of a campaign extended by --resume
   if (keep_existing && std::filesystem::is_regular_file(path, ec)) {
-    const RetainedSeries old = read_retained(path);
-    if (old.columns != columns || old.t != times || old.runs != runs) {
-      fail(path, "--resume: the retained file has other columns, times or runs than this campaign "
-                 "(columns " + join(old.columns) + ", " + std::to_string(old.runs) + " runs, " +
-                 std::to_string(old.t.size()) + " samples); remove it or resume with the same --runs");
+    RetainedSeries old = read_retained(path);
+    if (old.columns != columns || old.t != times) {
+      fail(path, "--resume: the retained file has other columns or times than this campaign "
+                 "(columns " + join(old.columns) + ", " + std::to_string(old.t.size()) +
+                 " samples): the scenario's retain keys changed; remove the file or start a new --out");
     }
+    if (old.runs != runs) carried = std::move(old);
+  }
+  if (keep_existing && !carried && std::filesystem::is_regular_file(path, ec)) {
     file_ = check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), path, "cannot open for writing");
     for (const auto& c : columns) {
       datasets_.push_back(check(H5Dopen2(file_, ("/series/" + c).c_str(), H5P_DEFAULT), path, "no dataset"));
@@ -132,6 +138,17 @@ RetainedFile::RetainedFile(const std::filesystem::path& path, const std::vector<
   write_attribute(file_, "runs", static_cast<double>(runs));
   write_attribute(file_, "samples", static_cast<double>(s));
   write_attribute(file_, "columns", join(columns));
+  if (carried) {  // a larger (or smaller) --runs on --resume: keep the rows of the runs done
+    const std::size_t S = times.size();
+    std::vector<double> values(columns.size() * S);
+    for (std::size_t k = 0; k < std::min(runs, carried->runs); ++k) {
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        std::copy_n(carried->values[c].begin() + static_cast<std::ptrdiff_t>(k * S), S,
+                    values.begin() + static_cast<std::ptrdiff_t>(c * S));
+      }
+      write_run(k, values, S);
+    }
+  }
 }
 
 RetainedFile::~RetainedFile() {

@@ -21,8 +21,9 @@ namespace attiguard::campaign {
 class RetainedFile {
  public:
   /// Creates `path` (replacing it) for `runs` runs of `times.size()` samples of `columns`, or,
-  /// with `keep_existing`, opens it when its runs, columns and times match (--resume); throws
-  /// InputError otherwise or when HDF5 fails.
+  /// with `keep_existing` (--resume), opens it when its columns and times match (a different
+  /// run count: rewritten with the rows of the runs below both counts kept); throws InputError
+  /// when they differ or when HDF5 fails.
   RetainedFile(const std::filesystem::path& path, const std::vector<std::string>& columns,
                const std::vector<double>& times, std::size_t runs, double interval,
                bool keep_existing);

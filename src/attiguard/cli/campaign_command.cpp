@@ -26,6 +26,8 @@
 #include "attiguard/app/campaign_runner.hpp"
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/export_aem_command.hpp"
+#include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 
 namespace attiguard::cli {
@@ -77,6 +79,12 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
     const PlotOutcome p = plot_results(std::string(c.handler->name), dir);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
   }
+  if (args.aem && r.status == app::RunStatus::ok) {
+    std::cout << "  " << write_run_aem(args.scenario, dir).string() << '\n';
+  }
+  if (args.view && r.status == app::RunStatus::ok) {
+    std::cout << "  " << write_run_view(dir).string() << '\n';
+  }
 }
 
 }  // namespace
@@ -84,6 +92,10 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
 void campaign_command(const CampaignArguments& args) {
   const parallel::World world = parallel::mpi_world();
   if (args.threads < 1) throw InputError("--threads: must be at least 1");
+  if ((args.view || args.aem) && !args.replay) {
+    throw InputError("--view and --aem go with --replay K (the trajectory of one run); view a "
+                     "whole campaign with `attiguard view DIR`");
+  }
   if (!args.replay && args.runs < 1) throw InputError("--runs: must be at least 1");
   if (args.replay && *args.replay < 0) throw InputError("--replay: must be a run index >= 0");
   make_dir(args.out_dir);

@@ -19,6 +19,8 @@ struct CampaignArguments {
   std::optional<long> replay;
   bool resume{false};
   bool plot{false};
+  bool view{false};  ///< --view (with --replay): DIR/run_K/view.html (docs/viewer.md)
+  bool aem{false};   ///< --aem (with --replay): DIR/run_K/attitude.aem (docs/interop.md)
 };
 
 /// Runs the campaign (or replays one run); see docs/campaigns.md for the outputs.

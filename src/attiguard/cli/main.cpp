@@ -172,6 +172,8 @@ int run(int argc, char** argv) {
   campaign_cmd->add_flag("--resume", campaign_args.resume,
                          "Keep the runs already in DIR/runs.csv and run the others");
   campaign_cmd->add_flag("--plot", campaign_args.plot, "Also write histograms and scatter plots");
+  campaign_cmd->add_flag("--view", campaign_args.view, "With --replay: also DIR/run_K/view.html");
+  campaign_cmd->add_flag("--aem", campaign_args.aem, "With --replay: also DIR/run_K/attitude.aem");
 
   attiguard::cli::ExportAemArguments aem_args;  // CCSDS AEM: cli/export_aem_command.cpp
   CLI::App* aem_cmd = app.add_subcommand(

@@ -48,7 +48,10 @@ class CampaignRun:
 
     @property
     def name(self) -> str:
-        return str(self.summary.get("scenario") or self.dir.name)
+        """The scenario's name: campaign.json's `name` when present, else its file's stem."""
+        if self.summary.get("name"):
+            return str(self.summary["name"])
+        return Path(str(self.summary.get("scenario") or self.dir.name)).stem
 
 
 def _float(x: str) -> float:
@@ -95,7 +98,8 @@ def _figures(run: CampaignRun) -> list[str]:
 def _dispersed(run: CampaignRun) -> list[str]:
     start = run.header.index("reason") + 1
     stop = run.header.index("violation")
-    return [h for h in run.header[start:stop] if np.nanstd(run.columns[h]) > 0][:_MAX_PANELS]
+    # Every dispersed column that varies: one scatter panel each (no cap).
+    return [h for h in run.header[start:stop] if np.nanstd(run.columns[h]) > 0]
 
 
 def _grid(n: int):

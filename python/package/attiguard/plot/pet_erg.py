@@ -54,10 +54,18 @@ def _circle(center: np.ndarray, angle: float, n: int = 200) -> np.ndarray:
 
 
 def _forbidden_cap(ax, a_c: np.ndarray, theta_c: float, color: str) -> None:
-    """The forbidden region {x : a_c^T x < cos theta_c}: a cap of radius pi - theta_c around -a_c."""
+    """The forbidden region {x : a_c^T x < cos theta_c}: a cap of radius pi - theta_c around -a_c.
+
+    The forbidden region of a narrow keep-in cone (theta_c < 90 deg) covers more than half the
+    sphere: it gets its boundary and a faint fill only, so that it never hides the keep-out
+    cones (small forbidden caps) drawn over it.
+    """
     radius = np.pi - theta_c
     centre = -a_c / np.linalg.norm(a_c)
+    wide = radius > np.pi / 2
     for frac, alpha in ((1.0, 0.35), (0.66, 0.25), (0.33, 0.2)):
+        if wide and frac < 1.0:
+            continue
         ring = _circle(centre, radius * frac)
         ax.plot(ring[:, 0], ring[:, 1], ring[:, 2], color=color, alpha=alpha + 0.3, linewidth=1.0)
     # Filled surface of the cap.
@@ -70,11 +78,12 @@ def _forbidden_cap(ax, a_c: np.ndarray, theta_c: float, color: str) -> None:
     rr, ss = np.meshgrid(r, s)
     pts = (np.cos(rr)[..., None] * centre + np.sin(rr)[..., None]
            * (np.cos(ss)[..., None] * u + np.sin(ss)[..., None] * v))
-    ax.plot_surface(pts[..., 0], pts[..., 1], pts[..., 2], color=color, alpha=0.25, linewidth=0)
+    ax.plot_surface(pts[..., 0], pts[..., 1], pts[..., 2], color=color, alpha=0.06 if wide else 0.25,
+                    linewidth=0)
 
 
 def sphere(run: Run) -> Path:
-    """Fig. 2: the body axes of the cones on the unit sphere, the cones and the desired direction."""
+    """The body axes of the cones on the unit sphere, the cones and the desired direction."""
     q = run.columns_of("q_w", "q_x", "q_y", "q_z")
     qg = run.columns_of("qg_w", "qg_x", "qg_y", "qg_z")
     qd = run.columns_of("qd_w", "qd_x", "qd_y", "qd_z")
@@ -95,7 +104,8 @@ def sphere(run: Run) -> Path:
         axes_b = [np.array([0.0, 0.0, 1.0])]
     # Each forbidden region in the colour of the body axis it constrains (cyan with one axis,
     # as in the paper's Fig. 2).
-    for cone in cones:
+    # Wide forbidden regions (narrow keep-in cones) first, faint: the small ones stay visible.
+    for cone in sorted(cones, key=lambda c: float(c["theta_c_deg"])):
         a_b = np.asarray(cone["axis_b"], dtype=float)
         k = next(i for i, b in enumerate(axes_b) if np.allclose(a_b, b))
         _forbidden_cap(ax, np.asarray(cone["direction_i"], dtype=float),
@@ -122,7 +132,7 @@ def sphere(run: Run) -> Path:
 
 
 def errors(run: Run) -> Path:
-    """Fig. 3: phi(R, R_d) and phi(R_g, R_d) on a log scale."""
+    """phi(R, R_d) and phi(R_g, R_d) on a log scale."""
     t = run.column("t")
     fig, (ax,) = new_figure()
     ax.semilogy(t, positive_or_nan(run.column("attitude_error")), label="φ(R, R_d)")
@@ -148,7 +158,7 @@ def _shade_trigger(ax, t: np.ndarray, trigger: np.ndarray) -> None:
 
 
 def lyapunov(run: Run) -> Path:
-    """Fig. 4: V with Gamma_d, Gamma_g and Gamma; held/updating intervals shaded."""
+    """V with Gamma_d, Gamma_g and Gamma; held/updating intervals shaded."""
     t = run.column("t")
     fig, (ax,) = new_figure()
     if run.summary.get("governor") == "pet":
@@ -169,7 +179,7 @@ def lyapunov(run: Run) -> Path:
 
 
 def torque(run: Run) -> Path:
-    """Fig. 5: ‖τ‖ against τ_max, with the components."""
+    """‖τ‖ against τ_max, with the components."""
     t = run.column("t")
     fig, (ax,) = new_figure()
     for c in ("x", "y", "z"):

@@ -4,7 +4,7 @@ Reads DIR/reach.json, steps.csv, tube.csv, boundary.csv and samples.csv written 
 ``attiguard reach`` (src/attiguard/app/reach_run.hpp) and writes:
 
 - ``reach_omega.png`` (Fig. 1a): sampled ω trajectories, the state-tube ω boxes and the search
-  regions U_0 and U_6 (dashed) in ω space;
+  regions of the first and last steps (dashed; U_0 and U_6 in the paper's scenario) in ω space;
 - ``reach_attitude.png`` (Fig. 1b): boundaries of the attitude balls B_Q(R_i, r_i) in the exp
   chart (points obtained by integrating (26) from the ellipsoid wᵀQw = r²) and the sampled
   attitude trajectories in the same chart;
@@ -65,12 +65,15 @@ def omega_plot(run: Run, summary: dict) -> Path:
             hi = [tube[f"omega_hi_{a}"][k] for a in "xyz"]
             for p, q in _box_edges(lo, hi):
                 ax.plot(*zip(p, q), color="tab:blue", alpha=0.15, linewidth=0.6)
-    for idx, style in ((0, "k--"), (6, "r--")):
-        steps = summary.get("steps", [])
-        if idx < len(steps):
+    steps = summary.get("steps", [])
+    for idx, style in ((0, "k--"), (len(steps) - 1, "r--")):
+        if 0 <= idx < len(steps) and "omega_box" in steps[idx]:
             box = steps[idx]["omega_box"]
             for n, (p, q) in enumerate(_box_edges(box["lower"], box["upper"])):
-                ax.plot(*zip(p, q), style, linewidth=1.2, label=f"U_{idx}" if n == 0 else None)
+                ax.plot(*zip(p, q), style, linewidth=1.2,
+                        label=f"search region of step {idx}" if n == 0 else None)
+        if len(steps) == 1:
+            break
     samples = _table(run, "samples.csv")
     if samples is not None:
         for s in np.unique(samples["sample"]):
@@ -79,7 +82,7 @@ def omega_plot(run: Run, summary: dict) -> Path:
     ax.set_xlabel("ω_x [rad/s]")
     ax.set_ylabel("ω_y [rad/s]")
     ax.set_zlabel("ω_z [rad/s]")
-    ax.set_title(title(run, "ω tube (boxes), U_0 / U_6 (dashed), samples"))
+    ax.set_title(title(run, "ω tube (boxes), first and last search regions (dashed), samples"))
     ax.legend(loc="upper left")
     return save(fig, run, "reach_omega.png")
 
@@ -102,7 +105,7 @@ def attitude_plot(run: Run, summary: dict) -> Path:
     ax.set_xlabel("r_x [rad]")
     ax.set_ylabel("r_y [rad]")
     ax.set_zlabel("r_z [rad]")
-    ax.set_title(title(run, f"attitude balls in exp chart {chart} (boundary via (26)), samples"))
+    ax.set_title(title(run, f"attitude ball boundaries in exp chart {chart}, samples"))
     return save(fig, run, "reach_attitude.png")
 
 

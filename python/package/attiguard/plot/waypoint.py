@@ -29,7 +29,7 @@ def _rotate_x(q: np.ndarray) -> np.ndarray:
 
 
 def path_3d(run: Run) -> Path:
-    """Fig. 2: 3-D path with the thrust direction x_b."""
+    """3-D path with the thrust direction x_b."""
     from matplotlib.figure import Figure
 
     p = run.columns_of("p_x", "p_y", "p_z")
@@ -48,18 +48,18 @@ def path_3d(run: Run) -> Path:
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.set_zlabel("z [m]")
-    ax.set_title(title(run, "path and thrust direction (Fig. 2)"))
+    ax.set_title(title(run, "path and thrust direction"))
     ax.legend(loc="best")
     return save(fig, run, "path_3d.png")
 
 
 def thrusters(run: Run) -> Path:
-    """Fig. 3: main thruster and the six RCT."""
+    """main thruster and the six RCT."""
     t = run.column("t")
     fig, axes = new_figure(7)
     axes[0].step(t, run.column("thrust"), where="post", color="r")
     axes[0].set_ylabel("T [N]")
-    axes[0].set_title(title(run, "thruster firings (Fig. 3)"))
+    axes[0].set_title(title(run, "thruster firings"))
     for j in range(6):
         axes[j + 1].step(t, run.column(f"rct_{j + 1}"), where="post")
         axes[j + 1].set_ylabel(f"f_{j + 1} [N]")
@@ -67,7 +67,7 @@ def thrusters(run: Run) -> Path:
 
 
 def speed(run: Run) -> Path:
-    """Fig. 4: speed and velocity components."""
+    """speed and velocity components."""
     t = run.column("t")
     v = run.columns_of("v_x", "v_y", "v_z")
     fig, (ax,) = new_figure()
@@ -75,13 +75,13 @@ def speed(run: Run) -> Path:
         ax.plot(t, v[:, i], label=f"v_{a}")
     ax.plot(t, np.linalg.norm(v, axis=1), "k--", linewidth=1.0, label="‖v‖")
     ax.set_ylabel("velocity [m/s]")
-    ax.set_title(title(run, "velocity (Fig. 4)"))
+    ax.set_title(title(run, "velocity"))
     ax.legend(loc="best")
     return save(fig, run, "velocity.png")
 
 
 def position_error(run: Run) -> Path:
-    """Fig. 5: position error to the active waypoint (log scale) and the mode."""
+    """position error to the active waypoint (log scale) and the mode."""
     t = run.column("t")
     p = run.columns_of("p_x", "p_y", "p_z")
     k = run.column("waypoint").astype(int)
@@ -93,7 +93,7 @@ def position_error(run: Run) -> Path:
         ax.semilogy(t, np.where(e > 0, e, np.nan), label="‖e‖ to the active waypoint")
         ax.legend(loc="best")
     ax.set_ylabel("position error [m]")
-    ax.set_title(title(run, "position error (Fig. 5)"))
+    ax.set_title(title(run, "position error"))
     names = run.summary.get("mode_names") or ["align", "accelerate", "coast", "flip",
                                               "decelerate", "fine", "done", "brake"]
     axm.step(t, run.column("mode"), where="post")
@@ -104,13 +104,13 @@ def position_error(run: Run) -> Path:
 
 
 def attitude(run: Run) -> Path:
-    """Fig. 6: quaternion, angular velocity and torque."""
+    """quaternion, angular velocity and torque."""
     t = run.column("t")
     fig, axes = new_figure(3)
     for name in ("q_w", "q_x", "q_y", "q_z"):
         axes[0].plot(t, run.column(name), label=name)
     axes[0].set_ylabel("q_ib")
-    axes[0].set_title(title(run, "attitude dynamics (Fig. 6)"))
+    axes[0].set_title(title(run, "attitude dynamics"))
     for a in AXES:
         axes[1].plot(t, run.column(f"omega_{a}"), label=f"ω_{a}")
         axes[2].plot(t, run.column(f"tau_{a}"), label=f"τ_{a}")

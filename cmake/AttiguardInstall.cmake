@@ -44,7 +44,7 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/attiguard-flight.pc.in
                ${PROJECT_BINARY_DIR}/pkgconfig/attiguard-flight.pc @ONLY)
 set(attiguard_pc_files ${PROJECT_BINARY_DIR}/pkgconfig/attiguard-flight.pc)
 if(TARGET attiguard_core)
-  set(pc_libs ${CSDP_LIBRARY} ${LAPACK_LIBRARIES} -lm -pthread)
+  set(pc_libs ${CSDP_LIBRARY} ${LAPACK_LIBRARIES} ${ATTIGUARD_HDF5_LINK_LIBRARIES} -lm -pthread)
   if(ATTIGUARD_MPI AND MPI_CXX_FOUND)
     list(PREPEND pc_libs ${MPI_CXX_LINK_FLAGS} ${MPI_CXX_LIBRARIES})
   endif()

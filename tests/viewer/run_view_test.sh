@@ -23,6 +23,7 @@ cd "$src"
 "$cli" run examples/pet_erg_paper.toml --out "$work/pet_erg_paper" --view
 "$cli" run examples/waypoint_paper.toml --out "$work/waypoint_paper" --view
 "$cli" run examples/mission_sun_constrained.toml --out "$work/mission_sun_constrained" --view
+"$cli" run examples/rigid_body_pd.toml --out "$work/rigid_body_pd" --view
 "$cli" reach examples/conreach_paper.toml --out "$work/conreach_paper" --view
 "$cli" campaign examples/pet_erg_campaign_retained.toml --runs 40 --seed 1 --out "$work/pet_erg_campaign" >/dev/null
 "$cli" campaign examples/pet_erg_campaign_retained.toml --seed 1 --out "$work/pet_erg_campaign" --replay 5 --view >/dev/null
@@ -37,4 +38,4 @@ fi
 
 "$node" "$src/tests/viewer/view_test.mjs" "$src/viewer" "$work/screenshots" \
   "$work/pet_erg_paper" "$work/waypoint_paper" "$work/mission_sun_constrained" \
-  "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5"
+  "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5" "$work/rigid_body_pd"

@@ -57,7 +57,9 @@ export function attitudeScene(renderer, s, summary) {
     scene.add(marker);
     boresights.push({ a: vec(a), marker });
   });
-  legend.push('traces of R a_b (black), R_g a_b (cyan, dashed: governor reference), R_d a_b (violet: desired; dot = final)');
+  legend.push(['trace of R a_b (black; dot: now)', qg ? 'R_g a_b (cyan, dashed: governor reference)' : '',
+    qd ? 'R_d a_b (violet: desired; dot = final)' : ''].filter(Boolean).join(', ')
+    + (coneList.length ? '' : '; a_b = x_b (no cone in this scenario)'));
 
   const torque = vectorArrow(0xff7f0e, 0.15);
   scene.add(torque.object);

@@ -63,7 +63,8 @@ function flightStrips(parent, s, t) {
     const lines = names.filter((n) => s.has(n)).map((n) => ({ label: n, values: s.col(n) }));
     if (lines.length) strips.push(makeStrip(parent, t, title, lines, opts));
   };
-  add('Lyapunov function V and threshold Γ (PET-ERG paper (5)) [J]', ['V', 'gamma']);
+  if (s.has('gamma')) add('Lyapunov function V and threshold Γ (PET-ERG paper (5)) [J]', ['V', 'gamma']);
+  else add('Lyapunov function V of the control law [J]', ['V']);
   const margins = s.columns.filter((c) => /^margin_\d+$/.test(c) || c === 'min_margin');
   add('pointing margins a_cᵀ R a_b − cos θ_c (≥ 0: satisfied) [–]', margins, { zero: true });
   if (s.has('tau_norm')) add('torque ‖τ‖ [N m]', ['tau_norm']);

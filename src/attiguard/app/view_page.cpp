@@ -219,6 +219,10 @@ json view_data(const fs::path& dir) {
     throw InputError(dir.string() + ": no summary.json, reach.json or campaign.json (expected the "
                                     "--out DIR of attiguard run, reach or campaign)");
   }
+  if (page["kind"] != "campaign" && !series.contains("trajectory")) {
+    throw InputError((dir / "trajectory.csv").string() + ": not found (the view shows the run's "
+                                                         "trajectory; a campaign's runs have one after --replay K)");
+  }
   page["name"] = page["summary"].value("name", dir.filename().string());
   page["series"] = std::move(series);
   page["source_dir"] = dir.filename().string();

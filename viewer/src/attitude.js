@@ -1,7 +1,7 @@
 // The attitude scene (kinds pet_erg, rigid_body, mission; the nominal of reach): the body with
 // its axes and constrained body axes, the celestial sphere with every cone, the boresight
 // traces of R, R_g and R_d and the torque vector (docs/viewer.md).
-import { THREE, axes, body, celestialSphere, cones, makeView, trace, vectorArrow, vec, polyline, label } from './scene.js';
+import { THREE, AXIS_COLORS, axes, body, celestialSphere, cones, distinctAxes, makeView, trace, vectorArrow, vec, polyline, label } from './scene.js';
 
 const SPHERE = 2.0;
 
@@ -30,7 +30,7 @@ export function attitudeScene(renderer, s, summary) {
   scene.add(celestialSphere(SPHERE));
   const coneList = summary.cones || [];
   scene.add(cones(coneList, SPHERE));
-  if (coneList.length) legend.push('cones on the unit sphere (drawn at radius 2): red = forbidden directions of a_b, red circle = boundary');
+  if (coneList.length) legend.push('cones on the unit sphere (drawn at radius 2): shaded = forbidden directions of a_b, circle = boundary; each cone, its body axis a_b (arrow on the body) in one colour');
 
   const q = quaternions(s, 'q_w', 'q_x', 'q_y', 'q_z');
   const qg = quaternions(s, 'qg_w', 'qg_x', 'qg_y', 'qg_z');
@@ -38,11 +38,12 @@ export function attitudeScene(renderer, s, summary) {
   const bodyObject = body(0.5);
   scene.add(bodyObject);
   const boresights = [];
-  const axesB = coneList.length ? coneList.map((c) => c.axis_b) : [[1, 0, 0]];
+  const axesB = coneList.length ? distinctAxes(coneList) : [[1, 0, 0]];
   axesB.forEach((a, k) => {
-    const arrow = new THREE.ArrowHelper(vec(a), new THREE.Vector3(), SPHERE, 0xe6a000, 0.15, 0.08);
+    const color = coneList.length ? AXIS_COLORS[k % AXIS_COLORS.length] : 0xe6a000;
+    const arrow = new THREE.ArrowHelper(vec(a), new THREE.Vector3(), SPHERE, color, 0.15, 0.08);
     bodyObject.add(arrow);
-    const l = label(`a_b${coneList.length ? ' ' + k : ''}`, '#b07800', 0.16);
+    const l = label(`a_b = [${a.map((v) => +v.toFixed(2)).join(', ')}]`, `#${color.toString(16).padStart(6, '0')}`, 0.14);
     l.position.copy(vec(a).multiplyScalar(SPHERE * 1.05));
     bodyObject.add(l);
     scene.add(trace(q, a, SPHERE, 0x222222));

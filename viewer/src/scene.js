@@ -180,14 +180,29 @@ export function celestialSphere(r) {
  * forbidden region shaded red, a narrow keep-in region's allowed cap shaded faint green (under
  * the forbidden shading, never hiding it), and a label.
  */
+/** Colours of the constrained body axes (cone k is drawn in the colour of its a_b). */
+export const AXIS_COLORS = [0xd62728, 0x9467bd, 0x8c564b, 0xe377c2];
+
+/** The distinct body axes a_b of a cone list, in order of first appearance. */
+export function distinctAxes(list) {
+  const out = [];
+  for (const c of list || []) {
+    if (!out.some((a) => a.every((v, i) => Math.abs(v - c.axis_b[i]) < 1e-12))) out.push(c.axis_b);
+  }
+  return out;
+}
+
 export function cones(list, r) {
   const g = new THREE.Group();
+  const axesB = distinctAxes(list);
   (list || []).forEach((c, k) => {
     const d = vec(c.direction_i);
     const theta = (c.theta_c_deg * Math.PI) / 180;
-    g.add(polyline(circle(d, theta, r * 1.001), 0xb22222));
+    const j = axesB.findIndex((a) => a.every((v, i) => Math.abs(v - c.axis_b[i]) < 1e-12));
+    const color = AXIS_COLORS[j % AXIS_COLORS.length];
+    g.add(polyline(circle(d, theta, r * 1.001), color));
     // Forbidden set: angle from d larger than θ_c, the cap of π − θ_c around −d.
-    const forbidden = cap(d.clone().negate(), Math.PI - theta, r, 0xd62728, 0.35);
+    const forbidden = cap(d.clone().negate(), Math.PI - theta, r, color, 0.35);
     forbidden.renderOrder = 2;
     g.add(forbidden);
     if (theta < Math.PI / 2) {
@@ -196,7 +211,8 @@ export function cones(list, r) {
       g.add(allowed);
     }
     const where = theta > Math.PI / 2 ? d.clone().negate() : d.clone();
-    const l = label(`cone ${k}: a_b = [${c.axis_b.map((v) => +v.toFixed(3)).join(', ')}]`, '#b22222', r * 0.07);
+    const css = `#${color.toString(16).padStart(6, '0')}`;
+    const l = label(`cone ${k}: a_b = [${c.axis_b.map((v) => +v.toFixed(3)).join(', ')}]`, css, r * 0.07);
     l.position.copy(where.multiplyScalar(r * 1.12));
     g.add(l);
   });

@@ -86,7 +86,7 @@ export function attitudeScene(renderer, s, summary) {
 }
 
 /** A small attitude-only scene (inset of waypoint / reach): the body and the inertial axes. */
-export function insetScene(renderer, q, summary) {
+export function insetScene(renderer, q, summary, withThrust = true) {
   const view = makeView(renderer, 4.2);
   view.scene.add(axes(1.6, 'i', 0.5));
   if (summary && summary.cones) {
@@ -96,7 +96,7 @@ export function insetScene(renderer, q, summary) {
   const b = body(0.5);
   view.scene.add(b);
   const thrust = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 1.4, 0xff7f0e, 0.2, 0.1);
-  b.add(thrust);
+  if (withThrust) b.add(thrust);
   return { ...view, update: (i) => b.quaternion.copy(q[i]), bodyObject: b, thrust };
 }
 

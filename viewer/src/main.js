@@ -81,11 +81,26 @@ function reachStrips(parent, series) {
     const t = tube.col('t0');
     const k = ['x', 'y', 'z'];
     const lines = [];
+    // Sampled trajectories' ω_b (samples.csv, the first 5 samples) under the bounds, thin grey.
+    const samples = series('samples');
+    if (samples) {
+      const id = samples.col('sample');
+      const st = samples.col('t');
+      for (const s of [...new Set(id)].slice(0, 5)) {
+        const rows = [];
+        for (let i = 0; i < samples.n; i++) if (id[i] === s) rows.push(i);
+        k.forEach((a) => lines.push({
+          label: '', color: '#9a9a9a', width: 0.8,
+          t: rows.map((i) => st[i]), values: rows.map((i) => samples.col(`omega_${a}`)[i]),
+        }));
+      }
+    }
+    const colours = { x: '#d62728', y: '#2ca02c', z: '#1f77b4' };
     k.forEach((a) => {
-      lines.push({ label: `ω_${a} lo`, values: tube.col(`omega_lo_${a}`) });
-      lines.push({ label: `ω_${a} hi`, values: tube.col(`omega_hi_${a}`) });
+      lines.push({ label: `ω_${a} bounds`, values: tube.col(`omega_lo_${a}`), color: colours[a] });
+      lines.push({ label: '', values: tube.col(`omega_hi_${a}`), color: colours[a] });
     });
-    strips.push(makeStrip(parent, t, 'ω tube: componentwise bounds of ω_b (tube.csv) [rad/s]', lines, { height: 170 }));
+    strips.push(makeStrip(parent, t, 'ω tube: bounds of ω_b (tube.csv); grey: 5 sampled ω_b [rad/s]', lines, { height: 190 }));
     const steps = series('steps');
     if (steps) strips.push(makeStrip(parent, steps.col('t'), 'attitude radius of the ball (steps.csv) [rad]', [{ label: 'attitude_radius', values: steps.col('attitude_radius') }], { zero: true }));
   }
@@ -132,12 +147,12 @@ function main() {
     inset = insetScene(renderer, q, data.kind === 'mission' ? data.summary : null);
   } else if (data.kind === 'reach') {
     main = reachScene(renderer, data, series, q);
-    inset = insetScene(renderer, q, null);
+    inset = insetScene(renderer, q, null, false);
   } else {
     main = attitudeScene(renderer, traj, data.summary);
   }
   const legend = [...main.legend];
-  if (inset) legend.push('inset (lower right): the body attitude R(t) with its axes; orange: main-engine axis x_b');
+  if (inset) legend.push(`inset (lower right): the body attitude R(t) with its axes${data.kind === 'reach' ? '' : '; orange: main-engine axis x_b'}`);
   legend.push(decimationNote(traj));
   for (const n of ['boundary', 'samples', 'tube']) if (series(n)) legend.push(decimationNote(series(n)));
   legend.push('units: SI (s, m, rad, N m); drag to turn, wheel to zoom');

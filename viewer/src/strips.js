@@ -4,7 +4,8 @@
 const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2', '#17becf'];
 
 /**
- * A strip: `lines` = [{label, values}] over `t`; `title` names the quantity and its unit.
+ * A strip: `lines` = [{label, values, t?, color?}] over `t` (or the line's own `t`); a line with
+ * an empty label is left out of the legend; `title` names the quantity and its unit.
  * Returns {draw(time)}.
  */
 export function makeStrip(parent, t, title, lines, options = {}) {
@@ -71,23 +72,25 @@ export function makeStrip(parent, t, title, lines, options = {}) {
     }
     lines.forEach((l, k) => {
       ctx.strokeStyle = l.color || COLORS[k % COLORS.length];
-      ctx.lineWidth = 1.5;
       ctx.beginPath();
       let pen = false;
-      for (let i = 0; i < t.length; i++) {
+      const tt = l.t || t;
+      ctx.lineWidth = l.width || 1.5;
+      for (let i = 0; i < tt.length; i++) {
         const v = l.values[i];
         if (v === null || !Number.isFinite(v)) {
           pen = false;
           continue;
         }
-        if (pen) ctx.lineTo(X(t[i]), Y(v));
-        else ctx.moveTo(X(t[i]), Y(v));
+        if (pen) ctx.lineTo(X(tt[i]), Y(v));
+        else ctx.moveTo(X(tt[i]), Y(v));
         pen = true;
       }
       ctx.stroke();
     });
     let x = L + W;
     for (let k = lines.length - 1; k >= 0; k--) {
+      if (!lines[k].label) continue;
       x -= ctx.measureText(lines[k].label).width + 14;
       ctx.fillStyle = lines[k].color || COLORS[k % COLORS.length];
       ctx.fillText(lines[k].label, x, 13);

@@ -117,6 +117,53 @@ TEST(WaypointRun, OneDegreeEngineMisalignmentStillReachesEveryWaypoint) {
   EXPECT_FALSE(simulate_waypoint(printed).completed);
 }
 
+// Issue 13, first bullet: flying straight through the waypoint diverged (exit 3, "integrator:
+// non-finite state at t = 102.51 s"): the reversed error direction of the flip became exactly
+// antiparallel to its chart (n = 0 in error_frame()). Now the crossing is an overshoot that
+// brakes and re-plans, and the run completes within its accuracy.
+TEST(WaypointRun, StraightCrossingOfTheWaypointCompletesWithoutNan) {
+  const sim::WaypointScenario sc = load("tests/data/waypoint/straight_crossing.toml");
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.finite);
+  ASSERT_TRUE(res.completed) << res.total_time;
+  EXPECT_LT(res.waypoints[0].final_position_error, sc.mission.position_accuracy);
+  EXPECT_LT(res.waypoints[0].final_speed, sc.mission.speed_accuracy);
+  std::printf("[ measured ] straight crossing: %.1f s, delta-v %.3f m/s\n", res.total_time,
+              res.waypoints[0].delta_v());
+}
+
+// Issue 13, second bullet: starting with a velocity away from the waypoint, (13) tested ‖v‖ and
+// the craft coasted away for 3000 s (850 m off, Δv 0, exit 0). Decisions now use the closing
+// speed: the craft turns back and arrives.
+TEST(WaypointRun, StartingAwayFromTheWaypointTurnsBackInsteadOfCoastingAway) {
+  const sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.finite);
+  ASSERT_TRUE(res.completed) << res.total_time;
+  EXPECT_LT(res.waypoints[0].final_position_error, sc.mission.position_accuracy);
+  EXPECT_GT(res.waypoints[0].delta_v(), 0.45);  // at least the 0.25 m/s away + 0.2 m/s towards
+  std::printf("[ measured ] receding start: %.1f s, delta-v %.3f m/s\n", res.total_time,
+              res.waypoints[0].delta_v());
+}
+
+// After an overshoot the re-planned leg used to coast away for ever as well (4350 s to 12000 s,
+// 2170 m away): coasting with a closing speed <= 0 is now an overshoot that re-plans.
+TEST(WaypointRun, CoastingAwayIsAnOvershootThatReplans) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  sc.R0_ib = lie::quat_to_rotation(lie::Quat(0.0, 0.0, 0.0, 1.0));  // x_b away from the waypoint
+  sc.v0_i = lie::Vec3(-0.5, 0.0, 0.0);
+  bool coasted_away = false;
+  const WaypointSimResult res =
+      simulate_waypoint(sc, [&](double, const dynamics::SpacecraftState& y, const guidance::MissionCommand& c) {
+        const lie::Vec3 e = sc.waypoints_i[0] - dynamics::p_i_of(y);
+        if (c.mode == guidance::Mode::coast && guidance::closing_speed(e, dynamics::v_i_of(y)) < -1e-3) {
+          coasted_away = true;
+        }
+      });
+  EXPECT_FALSE(coasted_away);
+  EXPECT_TRUE(res.completed) << res.total_time;
+}
+
 TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {
   // (14) holds along a line: braking on ‖e‖ with a lateral offset passes the closest point with
   // speed left, which κ_p = 0 cannot take back (Algorithm 1 as printed: no brake mode).

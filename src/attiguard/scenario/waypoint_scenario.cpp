@@ -6,7 +6,11 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 
+#include <Eigen/Eigenvalues>
+
+#include "attiguard/guidance/craft_defaults.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -66,37 +70,78 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     sc.waypoints_i.push_back(w.vector3("position"));
   }
 
-  const TableReader att = root.table("attitude_control");
-  declare(att, {"kp", "ki", "kd", "integral_zone"});
-  sc.gains.kp = att.number("kp", NumberRule::positive());
-  sc.gains.ki = att.number_or("ki", 0.0, NumberRule::non_negative());
-  sc.gains.kd = att.number("kd", NumberRule::positive());
-  sc.gains.integral_zone = att.number_or("integral_zone", 0.0, NumberRule::non_negative());
-
-  const TableReader fine = root.table("fine_position");
-  declare(fine, {"kappa_p", "kappa_d", "on_threshold"});
-  mp.rct.kappa_p = fine.number_or("kappa_p", 0.0, NumberRule::non_negative());
-  mp.rct.kappa_d = fine.number("kappa_d", NumberRule::positive());
-  mp.rct_threshold = fine.number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
-
+  // [guidance] profile first: it decides the defaults of the other tables.
   const TableReader g = root.table("guidance");
-  declare(g, {"cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
+  sc.profile = enum_or(g, "profile", sim::kGuidanceProfileNames, sim::GuidanceProfile::craft);
+  const bool paper = sc.profile == sim::GuidanceProfile::paper;
+  // The control period is needed by the craft defaults; [simulation] is read in full below.
+  const TableReader sim = root.table("simulation");
+  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
+  guidance::CraftLimits limits;
+  limits.mass = mp.mass;
+  limits.T_max = mp.T_max;
+  limits.f_max = mp.f_max;
+  limits.J_max = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues().maxCoeff();
+  limits.max_wheel_torque = sc.max_wheel_torque;
+  limits.control_period = sc.control_period;
+
+  // [attitude_control]: required by the paper profile (Table I); derived otherwise.
+  const control::QuaternionPidGains craft_gains = guidance::craft_attitude_gains(limits);
+  if (const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
+                             : root.optional_table("attitude_control")) {
+    declare(*att, {"kp", "ki", "kd", "integral_zone"});
+    sc.gains.kp = paper ? att->number("kp", NumberRule::positive())
+                        : att->number_or("kp", craft_gains.kp, NumberRule::positive());
+    sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
+    sc.gains.kd = paper ? att->number("kd", NumberRule::positive())
+                        : att->number_or("kd", craft_gains.kd, NumberRule::positive());
+    sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
+  } else {
+    sc.gains = craft_gains;
+  }
+
+  declare(g, {"profile", "cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
               "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
               "main_cutoff_speed", "replan_distance", "brake_speed",
               "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
               "flip_timing", "flip_lead_time"});
   mp.cruise_speed = g.number("cruise_speed", NumberRule::positive());
-  mp.acceleration_fraction =
-      g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
-  mp.pointing_tolerance = g.number_or("pointing_tolerance", 1e-6, {0.0, 1.0, true, true});
-  mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, false);
   mp.arrival_radius = g.number("arrival_radius", NumberRule::positive());
   mp.position_accuracy = g.number("position_accuracy", NumberRule::positive());
   mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
-  mp.braking_margin = g.number_or("braking_margin", 1.0, {0.0, 1.0, true, false});
+
+  // [fine_position]: required by the paper profile (κ_d of Table I); derived otherwise.
+  const control::RctPositionGains craft_rct = guidance::craft_rct_gains(limits, mp.speed_accuracy);
+  mp.rct = craft_rct;
+  if (const auto fine = paper ? std::optional<TableReader>(root.table("fine_position"))
+                              : root.optional_table("fine_position")) {
+    declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
+    mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
+                           : fine->number_or("kappa_d", craft_rct.kappa_d, NumberRule::positive());
+    // Craft profile: critical damping with the κ_d in force (position control on).
+    mp.rct.kappa_p = fine->number_or("kappa_p", paper ? 0.0 : 0.25 * mp.rct.kappa_d * mp.rct.kappa_d,
+                                     NumberRule::non_negative());
+    mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
+  }
+
+  mp.acceleration_fraction =
+      g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
+  mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, !paper);
+  mp.pointing_tolerance = g.number_or(
+      "pointing_tolerance", paper ? 1e-6 : guidance::craft_pointing_tolerance(limits), {0.0, 1.0, true, true});
+  mp.braking_margin = g.number_or(
+      "braking_margin", paper ? 1.0 : guidance::craft_braking_margin(limits, mp.cruise_speed),
+      {0.0, 1.0, true, false});
   mp.brake_along_velocity = enum_or(g, "braking_distance", sim::kBrakingDistanceNames, true);
-  mp.main_cutoff_speed = g.number_or("main_cutoff_speed", 0.02, NumberRule::non_negative());
-  mp.replan_distance = g.number_or("replan_distance", 50.0, NumberRule::positive());
+  mp.main_cutoff_speed = g.number_or(
+      "main_cutoff_speed", paper ? 0.02 : guidance::craft_main_cutoff_speed(limits, mp.cruise_speed),
+      NumberRule::non_negative());
+  mp.replan_distance = g.number_or(
+      "replan_distance",
+      paper ? 50.0
+            : guidance::craft_replan_distance(limits, mp.main_cutoff_speed, mp.position_accuracy,
+                                              mp.arrival_radius),
+      NumberRule::positive());
   mp.brake_speed =
       g.number_or("brake_speed", guidance::default_brake_speed(mp), NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
@@ -104,9 +149,11 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   const double full_deg =
       g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
   mp.projection.cos_full = std::cos(full_deg * kPi / 180.0);
-  mp.flip_timing =
-      enum_or(g, "flip_timing", sim::kFlipTimingNames, guidance::FlipTiming::immediate);
-  mp.flip_lead_time = g.number_or("flip_lead_time", 60.0, NumberRule::non_negative());
+  mp.flip_timing = enum_or(g, "flip_timing", sim::kFlipTimingNames,
+                           paper ? guidance::FlipTiming::immediate : guidance::FlipTiming::braking_point);
+  mp.flip_lead_time = g.number_or(
+      "flip_lead_time", paper ? 60.0 : 1.5 * guidance::craft_slew_time(limits, sc.gains),
+      NumberRule::non_negative());
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",
            "replan_distance (" + num(mp.replan_distance) + ") must exceed arrival_radius (" +
@@ -119,11 +166,9 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     g.fail("main_cutoff_speed", "must be < cruise_speed (" + num(mp.cruise_speed) + ")");
   }
 
-  const TableReader sim = root.table("simulation");
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
                 "rel_tol", "max_step"});
   sc.duration = sim.number("duration", NumberRule::positive());
-  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
   sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
   sc.integrator = parse_integrator_settings(sim);
   if (sc.control_period > sc.duration) {

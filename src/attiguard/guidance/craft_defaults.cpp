@@ -1,0 +1,64 @@
+#include "attiguard/guidance/craft_defaults.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace attiguard::guidance {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+double craft_pointing_tolerance(const CraftLimits& c) noexcept {
+  const double alpha = std::clamp(0.5 * c.f_max / c.T_max, 2e-3, 0.05);
+  return std::sin(0.5 * alpha);
+}
+
+double craft_braking_margin(const CraftLimits& c, double cruise_speed) noexcept {
+  return std::clamp(1.0 / (1.0 + 4.0 * c.a_main() * c.control_period / cruise_speed), 0.5, 0.95);
+}
+
+double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexcept {
+  return std::min(c.a_main() * c.control_period, 0.5 * cruise_speed);
+}
+
+double rct_stopping_distance(const CraftLimits& c, double speed) noexcept {
+  return speed * speed / c.a_rct();
+}
+
+double craft_replan_distance(const CraftLimits& c, double cutoff_speed, double position_accuracy,
+                             double arrival_radius) noexcept {
+  return std::max({25.0 * position_accuracy, 10.0 * arrival_radius,
+                   4.0 * rct_stopping_distance(c, cutoff_speed)});
+}
+
+control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy) noexcept {
+  control::RctPositionGains g;
+  g.kappa_d = std::min(c.a_rct() / speed_accuracy, 0.2 / c.control_period);
+  g.kappa_p = 0.25 * g.kappa_d * g.kappa_d;
+  return g;
+}
+
+control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept {
+  double omega_n = std::min(0.3, 0.1 / c.control_period);
+  if (c.max_wheel_torque > 0.0) {
+    omega_n = std::min(omega_n, std::sqrt(c.max_wheel_torque / (2.0 * c.J_max)));
+  }
+  control::QuaternionPidGains g;
+  g.kp = 2.0 * omega_n * omega_n * c.J_max;
+  g.kd = 4.0 * omega_n * c.J_max;
+  g.ki = 0.0;
+  g.integral_zone = 0.0;
+  return g;
+}
+
+double craft_slew_time(const CraftLimits& c, const control::QuaternionPidGains& gains) noexcept {
+  const double omega_n = std::sqrt(gains.kp / (2.0 * c.J_max));
+  double t = 10.0 / omega_n;
+  if (c.max_wheel_torque > 0.0) {
+    t = std::max(t, 2.0 * std::sqrt(kPi * c.J_max / c.max_wheel_torque));
+  }
+  return t;
+}
+
+}  // namespace attiguard::guidance

@@ -11,7 +11,64 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/sim/mission_run.hpp"
 #include "cli_runner.hpp"
+
+namespace {
+
+attiguard::sim::MissionScenario load_mission_example() {
+  return attiguard::scenario::parse_mission(attiguard::scenario::load_document(
+      std::string(ATTIGUARD_SOURCE_DIR) + "/examples/mission_sun_constrained.toml"));
+}
+
+}  // namespace
+
+// Issue 13: the cost of the constraints is reported only when both flights completed (it was
+// −3.17 m/s for an incomplete constrained flight), and a numerical failure of one flight keeps
+// the other's results, with the failure named.
+TEST(MissionRun, CostsOnlyWhenBothFlightsCompletedAndAFailedTwinKeepsTheOwnResults) {
+  using namespace attiguard;
+  const sim::MissionScenario sc = load_mission_example();
+  sim::MissionFlights f;
+  f.own = sim::simulate_mission(sc, governor::GovernorMode::pet);
+  f.twin = sim::simulate_mission(sc, governor::GovernorMode::none);
+  ASSERT_TRUE(f.own.flight.completed && f.twin.flight.completed);
+  const nlohmann::json ok = sim::mission_summary(sc, f);
+  EXPECT_EQ(ok["outcome"], "completed");
+  EXPECT_TRUE(ok["time_cost"].is_number());
+  EXPECT_FALSE(ok.contains("outcome_reason"));
+
+  // The unconstrained twin cut short: incomplete, with a reason; no cost.
+  sim::MissionScenario short_sc = sc;
+  short_sc.waypoint.duration = 200.0;
+  sim::MissionFlights partial = f;
+  partial.twin = sim::simulate_mission(short_sc, governor::GovernorMode::none);
+  ASSERT_FALSE(partial.twin.flight.completed);
+  const nlohmann::json inc = sim::mission_summary(sc, partial);
+  EXPECT_EQ(inc["outcome"], "completed");
+  EXPECT_EQ(inc["unconstrained"]["outcome"], "incomplete");
+  EXPECT_NE(inc["unconstrained"]["outcome_reason"].get<std::string>().find("time out at 200.0 s"),
+            std::string::npos)
+      << inc["unconstrained"]["outcome_reason"];
+  EXPECT_TRUE(inc["time_cost"].is_null());
+  EXPECT_TRUE(inc["delta_v_cost"].is_null());
+
+  // The twin failed numerically: the own flight's figures are all there, the failure named.
+  sim::MissionFlights failed = f;
+  failed.twin = sim::MissionResult{};
+  failed.twin.flight.finite = false;
+  failed.twin.failure = "integrator: non-finite state at t = 1.5 s (divergence)";
+  const nlohmann::json fj = sim::mission_summary(sc, failed);
+  EXPECT_EQ(fj["outcome"], "completed");
+  EXPECT_EQ(fj["constrained"]["waypoints_reached"].get<long>(), 2);
+  EXPECT_EQ(fj["unconstrained"]["outcome"], "incomplete");
+  EXPECT_NE(fj["unconstrained"]["outcome_reason"].get<std::string>().find("numerical failure: integrator"),
+            std::string::npos);
+  EXPECT_NE(fj["twin_failure"].get<std::string>().find("divergence"), std::string::npos);
+  EXPECT_TRUE(fj["time_cost"].is_null());
+}
 
 #ifdef ATTIGUARD_CLI_PATH
 

@@ -164,6 +164,32 @@ TEST(WaypointRun, CoastingAwayIsAnOvershootThatReplans) {
   EXPECT_TRUE(res.completed) << res.total_time;
 }
 
+// Issue 13: an honest outcome. A run cut short says `incomplete` and why, with the distance and
+// speed left; a completed one says `completed` and no reason.
+TEST(WaypointRun, OutcomeIsCompletedOrIncompleteWithTheReasonAndWhatIsLeft) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  const nlohmann::json done = waypoint_summary(sc, simulate_waypoint(sc));
+  EXPECT_EQ(done["outcome"], "completed");
+  EXPECT_FALSE(done.contains("outcome_reason"));
+  sc.duration = 300.0;
+  const WaypointSimResult cut = simulate_waypoint(sc);
+  const nlohmann::json j = waypoint_summary(sc, cut);
+  EXPECT_EQ(j["outcome"], "incomplete");
+  const std::string why = j["outcome_reason"].get<std::string>();
+  EXPECT_NE(why.find("time out at 300.0 s"), std::string::npos) << why;
+  char left[64];
+  std::snprintf(left, sizeof left, "%.3f m away", cut.final_distance);
+  EXPECT_NE(why.find(left), std::string::npos) << why;
+  EXPECT_GT(cut.final_distance, 1.0);
+
+  // Moving away at the end is named as such.
+  sc.v0_i = lie::Vec3(-0.25, 0.0, 0.0);
+  sc.duration = 0.5;  // still receding: 0.5 s of thrust take 0.1 of the 0.25 m/s
+  const WaypointSimResult away = simulate_waypoint(sc);
+  EXPECT_NE(waypoint_outcome(sc, away).reason.find("moving away"), std::string::npos)
+      << waypoint_outcome(sc, away).reason;
+}
+
 TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {
   // (14) holds along a line: braking on ‖e‖ with a lateral offset passes the closest point with
   // speed left, which κ_p = 0 cannot take back (Algorithm 1 as printed: no brake mode).

@@ -283,5 +283,24 @@ TEST(WaypointCli, BadScenarioExitsWithCode2) {
 }
 #endif
 
+// Issue 13: `check` refuses what the craft cannot fly, with the reason and the number.
+TEST(WaypointScenario, RejectsMissionsTheCraftCannotFly) {
+  // κ_p so small that the RCT stop firing 2.5 m from the waypoint: δ_p = 0.2 m is out of reach.
+  expect_input_error(example_with("waypoint_fine.toml", {{"kappa_p = 0.02", "kappa_p = 0.001"}}),
+                     "fine_position.kappa_p: position_accuracy 0.2 m is unreachable: the RCT (0.005 m/s^2) "
+                     "stop firing within 2.5 m of the waypoint");
+  // Wheels too weak to flip: a half turn at 2e-4 N m takes 2√(π·20/2e-4) = 1121 s per leg.
+  expect_input_error(example_with("waypoint_fine.toml", {{"max_wheel_torque = 5.0", "max_wheel_torque = 0.0002"}}),
+                     "plus 3363 s of flips at max_wheel_torque 0.0002 N m");
+  // The paper profile keeps the paper's defaults: the same file without the keys it sets.
+  const sim::WaypointScenario paper = scenario::parse_waypoint(scenario::parse_document(
+      example_with("waypoint_paper.toml", {{"pointing_tolerance = 1e-6", ""}, {"braking_margin = 0.95", ""}}),
+      "paper.toml"));
+  EXPECT_EQ(paper.mission.pointing_tolerance, 1e-6);
+  EXPECT_EQ(paper.mission.braking_margin, 1.0);  // (16) as printed
+  EXPECT_FALSE(paper.mission.pointing_thrust_axis);
+  EXPECT_EQ(paper.mission.flip_timing, guidance::FlipTiming::immediate);
+}
+
 }  // namespace
 }  // namespace attiguard::sim

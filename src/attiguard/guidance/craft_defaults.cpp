@@ -32,11 +32,36 @@ double craft_replan_distance(const CraftLimits& c, double cutoff_speed, double p
                    4.0 * rct_stopping_distance(c, cutoff_speed)});
 }
 
-control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy) noexcept {
+control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
+                                          double position_accuracy) noexcept {
   control::RctPositionGains g;
-  g.kappa_d = std::min(c.a_rct() / speed_accuracy, 0.2 / c.control_period);
-  g.kappa_p = 0.25 * g.kappa_d * g.kappa_d;
+  g.kappa_d = c.a_rct() / speed_accuracy;
+  g.kappa_p = craft_kappa_p(c, g.kappa_d, position_accuracy);
   return g;
+}
+
+double craft_kappa_p(const CraftLimits& c, double kappa_d, double position_accuracy) noexcept {
+  return std::max(0.25 * kappa_d * kappa_d, c.a_rct() / position_accuracy);
+}
+
+double rct_position_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
+                              double threshold) noexcept {
+  return g.kappa_p > 0.0 ? threshold * c.a_rct() / g.kappa_p : HUGE_VAL;
+}
+
+double rct_speed_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
+                           double threshold) noexcept {
+  return threshold * c.a_rct() / g.kappa_d;
+}
+
+double rct_speed_quantum(const CraftLimits& c) noexcept { return c.a_rct() * c.control_period; }
+
+double main_speed_left(const CraftLimits& c, double cutoff_speed) noexcept {
+  return std::max(cutoff_speed, 0.5 * c.a_main() * c.control_period);
+}
+
+double wheel_half_turn_time(const CraftLimits& c) noexcept {
+  return c.max_wheel_torque > 0.0 ? 2.0 * std::sqrt(kPi * c.J_max / c.max_wheel_torque) : 0.0;
 }
 
 control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept {
@@ -54,11 +79,7 @@ control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept 
 
 double craft_slew_time(const CraftLimits& c, const control::QuaternionPidGains& gains) noexcept {
   const double omega_n = std::sqrt(gains.kp / (2.0 * c.J_max));
-  double t = 10.0 / omega_n;
-  if (c.max_wheel_torque > 0.0) {
-    t = std::max(t, 2.0 * std::sqrt(kPi * c.J_max / c.max_wheel_torque));
-  }
-  return t;
+  return std::max(10.0 / omega_n, wheel_half_turn_time(c));
 }
 
 }  // namespace attiguard::guidance

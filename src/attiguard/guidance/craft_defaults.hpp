@@ -47,10 +47,36 @@ struct CraftLimits {
 [[nodiscard]] double craft_replan_distance(const CraftLimits& c, double cutoff_speed,
                                            double position_accuracy, double arrival_radius) noexcept;
 
-/// RCT gains of (28): κ_d = min(a_rct/δ_v, 0.2/T_s) (an RCT fires once ‖v‖ ≥ δ_v/2; the sampled
-/// loop stays well damped) and κ_p = κ_d²/4 (critical damping).
-[[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c,
-                                                         double speed_accuracy) noexcept;
+/// RCT gains of (28): κ_d = a_rct/δ_v (at the bang-bang threshold f_max/2 an RCT fires once
+/// ‖v‖ ≥ δ_v/2) and κ_p = max(κ_d²/4, a_rct/δ_p) (critical damping, and firing once ‖e‖ ≥ δ_p/2).
+[[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
+                                                         double position_accuracy) noexcept;
+
+/// κ_p of craft_rct_gains() for a given κ_d: max(κ_d²/4, a_rct/δ_p) [1/s²].
+[[nodiscard]] double craft_kappa_p(const CraftLimits& c, double kappa_d,
+                                   double position_accuracy) noexcept;
+
+/// Dead band of the bang-bang RCT law (28)-(30) at rest: no thruster fires while
+/// κ_p ‖e‖ < threshold · a_rct, i.e. within threshold · a_rct/κ_p of the waypoint [m]
+/// (+∞ for κ_p = 0).
+[[nodiscard]] double rct_position_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
+                                            double threshold) noexcept;
+
+/// Speed dead band of (28)-(30) on the waypoint: threshold · a_rct/κ_d [m/s].
+[[nodiscard]] double rct_speed_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
+                                         double threshold) noexcept;
+
+/// Speed change of one RCT firing for one control period, a_rct T_s [m/s]: the resolution of the
+/// sampled on/off thrusters.
+[[nodiscard]] double rct_speed_quantum(const CraftLimits& c) noexcept;
+
+/// Speed the main engine can leave when it cuts off: max(cut-off speed, a T_s/2) (braking stops
+/// within half a period of the cut-off at best) [m/s].
+[[nodiscard]] double main_speed_left(const CraftLimits& c, double cutoff_speed) noexcept;
+
+/// Shortest half-turn slew the wheels allow, 2√(π J_max/τ_w) (bang-bang torque), 0 without a
+/// limit [s].
+[[nodiscard]] double wheel_half_turn_time(const CraftLimits& c) noexcept;
 
 /// Critically damped attitude PD (27) for the largest inertia: natural frequency
 /// ω_n = min(0.3, 0.1/T_s) rad/s (and, with a wheel limit τ_w, at most √(τ_w/(2 J_max))), so that

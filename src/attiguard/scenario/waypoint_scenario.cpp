@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <optional>
 
@@ -20,6 +21,13 @@ namespace attiguard::scenario {
 namespace {
 
 std::string num(double x) { return detail::format_number(x); }
+
+/// A derived figure in a message: 4 significant digits.
+std::string g4(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
 
 constexpr double kPi = 3.14159265358979323846;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
@@ -111,16 +119,19 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
 
   // [fine_position]: required by the paper profile (κ_d of Table I); derived otherwise.
-  const control::RctPositionGains craft_rct = guidance::craft_rct_gains(limits, mp.speed_accuracy);
+  const control::RctPositionGains craft_rct =
+      guidance::craft_rct_gains(limits, mp.speed_accuracy, mp.position_accuracy);
   mp.rct = craft_rct;
-  if (const auto fine = paper ? std::optional<TableReader>(root.table("fine_position"))
-                              : root.optional_table("fine_position")) {
+  const auto fine_table = paper ? std::optional<TableReader>(root.table("fine_position"))
+                                : root.optional_table("fine_position");
+  if (const auto& fine = fine_table) {
     declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
     mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
                            : fine->number_or("kappa_d", craft_rct.kappa_d, NumberRule::positive());
-    // Craft profile: critical damping with the κ_d in force (position control on).
-    mp.rct.kappa_p = fine->number_or("kappa_p", paper ? 0.0 : 0.25 * mp.rct.kappa_d * mp.rct.kappa_d,
-                                     NumberRule::non_negative());
+    // Craft profile: the derived κ_p with the κ_d in force (position control on).
+    mp.rct.kappa_p = fine->number_or(
+        "kappa_p", paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy),
+        NumberRule::non_negative());
     mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
   }
 
@@ -187,18 +198,63 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
                     "output rows");
   root.finish();
 
-  // Reachability: every waypoint needs at least the bang-bang time of its leg.
+  // What the craft cannot fly (docs/waypoint.md, "Tuning"): rejected with the reason and the
+  // numbers, before flying.
+  auto fail_fine = [&](const char* fine_key, const char* guidance_key, const std::string& why) {
+    if (fine_table && fine_table->has(fine_key)) fine_table->fail(fine_key, why);
+    g.fail(guidance_key, why);
+  };
+  const double band_p = guidance::rct_position_dead_band(limits, mp.rct, mp.rct_threshold);
+  if (mp.rct.kappa_p > 0.0 && band_p > mp.position_accuracy) {
+    fail_fine("kappa_p", "position_accuracy",
+              "position_accuracy " + g4(mp.position_accuracy) + " m is unreachable: the RCT (" +
+                  g4(limits.a_rct()) + " m/s^2) stop firing within " + g4(band_p) +
+                  " m of the waypoint with kappa_p = " + g4(mp.rct.kappa_p));
+  }
+  const double band_v = guidance::rct_speed_dead_band(limits, mp.rct, mp.rct_threshold);
+  // At the band itself the position term of (28) still fires (waypoint_fine.toml flies at
+  // band = δ_v); twice the accuracy is out of reach.
+  if (band_v > 2.0 * mp.speed_accuracy) {
+    fail_fine("kappa_d", "speed_accuracy",
+              "speed_accuracy " + g4(mp.speed_accuracy) + " m/s is unreachable: the RCT (" +
+                  g4(limits.a_rct()) + " m/s^2) stop firing below " + g4(band_v) +
+                  " m/s with kappa_d = " + g4(mp.rct.kappa_d) + " (more than twice the accuracy)");
+  }
+  const double quantum = guidance::rct_speed_quantum(limits);
+  if (quantum > 2.0 * mp.speed_accuracy) {
+    g.fail("speed_accuracy", "speed_accuracy " + g4(mp.speed_accuracy) +
+                                 " m/s is unreachable: one control period of one RCT changes the "
+                                 "speed by " + g4(quantum) + " m/s (more than twice the accuracy)");
+  }
+  const double v_left = guidance::main_speed_left(limits, mp.main_cutoff_speed);
+  const double s_rct = guidance::rct_stopping_distance(limits, v_left);
+  if (s_rct > mp.replan_distance) {
+    craft.fail("rct_thrust", "thruster authority too small: the RCT (" + g4(limits.a_rct()) +
+                                 " m/s^2) need " + g4(s_rct) + " m to stop the " + g4(v_left) +
+                                 " m/s the main engine leaves at cut-off, more than "
+                                 "guidance.replan_distance (" + g4(mp.replan_distance) + " m)");
+  }
+
+  // Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
+  // (the flip) at the wheels' torque limit per leg longer than the arrival radius.
   const double a_max = mp.T_max / mp.mass;
+  const double t_flip = guidance::wheel_half_turn_time(limits);
   double t_min = 0.0;
+  double t_flips = 0.0;
   lie::Vec3 from = sc.p0_i;
   for (std::size_t k = 0; k < sc.waypoints_i.size(); ++k) {
-    t_min += 2.0 * std::sqrt((sc.waypoints_i[k] - from).norm() / a_max);
+    const double leg = (sc.waypoints_i[k] - from).norm();
+    t_min += 2.0 * std::sqrt(leg / a_max);
+    if (leg > mp.arrival_radius) t_flips += t_flip;
     from = sc.waypoints_i[k];
-    if (t_min > sc.duration) {
+    if (t_min + t_flips > sc.duration) {
       wps[k].fail("position",
                   "waypoint " + std::to_string(k) + " is unreachable within simulation.duration (" +
                       num(sc.duration) + " s): even bang-bang at T_max/m = " + num(a_max) +
-                      " m/s^2 needs " + num(t_min) + " s to get there");
+                      " m/s^2 needs " + num(t_min) + " s to get there" +
+                      (t_flips > 0.0 ? " plus " + g4(t_flips) + " s of flips at max_wheel_torque " +
+                                           g4(sc.max_wheel_torque) + " N m"
+                                     : std::string()));
     }
   }
   return sc;

@@ -35,7 +35,10 @@ TEST(CraftDefaults, RctGainsPutTheDeadBandsInsideTheAccuracies) {
       const control::RctPositionGains g = craft_rct_gains(c, dv, dp);
       EXPECT_LE(rct_speed_dead_band(c, g, 0.5), 0.5 * dv + 1e-15);
       EXPECT_LE(rct_position_dead_band(c, g, 0.5), 0.5 * dp + 1e-15);
-      EXPECT_GE(g.kappa_p, 0.25 * g.kappa_d * g.kappa_d);  // at least critically damped
+      // The switching line v = λ e is one the RCT can follow from 12.5 δ_p: λ² e ≤ a_rct.
+      const double lambda = g.kappa_p / g.kappa_d;
+      EXPECT_TRUE(lambda * lambda * 12.5 * dp <= c.a_rct() * (1.0 + 1e-12) ||
+                  g.kappa_p == c.a_rct() / dp);
     }
   }
 }

@@ -41,7 +41,9 @@ control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_acc
 }
 
 double craft_kappa_p(const CraftLimits& c, double kappa_d, double position_accuracy) noexcept {
-  return std::max(0.25 * kappa_d * kappa_d, c.a_rct() / position_accuracy);
+  const double lambda =
+      std::min(std::sqrt(c.a_rct() / (12.5 * position_accuracy)), 0.1 / c.control_period);
+  return std::max(lambda * kappa_d, c.a_rct() / position_accuracy);
 }
 
 double rct_position_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
@@ -65,7 +67,7 @@ double wheel_half_turn_time(const CraftLimits& c) noexcept {
 }
 
 control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept {
-  double omega_n = std::min(0.3, 0.1 / c.control_period);
+  double omega_n = std::min({0.3, 0.1 / c.control_period, c.J_min / (4.0 * c.J_max * c.control_period)});
   if (c.max_wheel_torque > 0.0) {
     omega_n = std::min(omega_n, std::sqrt(c.max_wheel_torque / (2.0 * c.J_max)));
   }

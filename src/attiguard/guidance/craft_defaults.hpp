@@ -18,6 +18,7 @@ struct CraftLimits {
   double T_max{20.0};              ///< main thrust [N]
   double f_max{0.5};               ///< one RCT's thrust [N]
   double J_max{20.0};              ///< largest principal inertia [kg·m²]
+  double J_min{20.0};              ///< smallest principal inertia [kg·m²]
   double max_wheel_torque{0.0};    ///< per-axis wheel limit, 0 = none [N·m]
   double control_period{0.1};      ///< T_s [s]
   [[nodiscard]] double a_main() const noexcept { return T_max / mass; }  ///< [m/s²]
@@ -48,11 +49,14 @@ struct CraftLimits {
                                            double position_accuracy, double arrival_radius) noexcept;
 
 /// RCT gains of (28): κ_d = a_rct/δ_v (at the bang-bang threshold f_max/2 an RCT fires once
-/// ‖v‖ ≥ δ_v/2) and κ_p = max(κ_d²/4, a_rct/δ_p) (critical damping, and firing once ‖e‖ ≥ δ_p/2).
+/// ‖v‖ ≥ δ_v/2) and κ_p from craft_kappa_p().
 [[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
                                                          double position_accuracy) noexcept;
 
-/// κ_p of craft_rct_gains() for a given κ_d: max(κ_d²/4, a_rct/δ_p) [1/s²].
+/// κ_p of craft_rct_gains() for a given κ_d [1/s²]: the on/off RCT slide along the switching line
+/// κ_p e = κ_d v, v = λ e; λ = κ_p/κ_d = min(√(a_rct/(12.5 δ_p)), 0.1/T_s) is the steepest line
+/// they can follow from half the default re-plan distance (λ² e ≤ a_rct) and that the sampled
+/// loop resolves; κ_p = max(λ κ_d, a_rct/δ_p) (an RCT fires once ‖e‖ ≥ δ_p/2).
 [[nodiscard]] double craft_kappa_p(const CraftLimits& c, double kappa_d,
                                    double position_accuracy) noexcept;
 
@@ -79,8 +83,9 @@ struct CraftLimits {
 [[nodiscard]] double wheel_half_turn_time(const CraftLimits& c) noexcept;
 
 /// Critically damped attitude PD (27) for the largest inertia: natural frequency
-/// ω_n = min(0.3, 0.1/T_s) rad/s (and, with a wheel limit τ_w, at most √(τ_w/(2 J_max))), so that
-/// k_p = 2 ω_n² J_max, k_d = 4 ω_n J_max (ε ≈ θ/2 in (27)); k_i = 0.
+/// ω_n = min(0.3, 0.1/T_s, J_min/(4 J_max T_s)) rad/s (the last keeps the sampled derivative
+/// term k_d T_s/(2 J_min) ≤ 1/2 on the lightest axis) and, with a wheel limit τ_w, at most
+/// √(τ_w/(2 J_max)); k_p = 2 ω_n² J_max, k_d = 4 ω_n J_max (ε ≈ θ/2 in (27)); k_i = 0.
 [[nodiscard]] control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept;
 
 /// Estimated duration of a half-turn slew with the gains `gains` (10/ω_n of the PD (27)) or, with

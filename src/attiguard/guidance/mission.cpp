@@ -37,6 +37,7 @@ const char* reason_name(TransitionReason reason) noexcept {
     case TransitionReason::braked: return "braked";
     case TransitionReason::replan: return "replan";
     case TransitionReason::overshoot: return "overshoot";
+    case TransitionReason::lateral_speed: return "lateral_speed";
   }
   return "?";
 }
@@ -81,7 +82,11 @@ void Mission::start_leg(const MissionInputs& in) noexcept {
     chart_accel_ = -chart_accel_;
   }
   chart_decel_ = chart_accel_;
-  mode_ = leg_distance_ <= params_.arrival_radius ? Mode::fine : Mode::align;
+  // A leg inside half the re-plan distance, started slowly enough for the RCT, is flown by fine
+  // control (28) alone: the main engine's speed quantum is too coarse for it.
+  const bool rct_leg = params_.rct.kappa_p > 0.0 && leg_distance_ <= 0.5 * params_.replan_distance &&
+                       !brake_needed(in.v_i.norm());
+  mode_ = leg_distance_ <= params_.arrival_radius || rct_leg ? Mode::fine : Mode::align;
   q_hold_ = chart_accel_;
 }
 
@@ -120,6 +125,14 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
     next = brake_needed(speed) ? Mode::brake : after_slow;
     return TransitionReason::overshoot;
   };
+  // Speed across the line of sight that thrust along ê cannot take out: brake to rest first.
+  const double lateral = dist > 0.0 ? (in.v_i - e_i * (e_i.dot(in.v_i) / (dist * dist))).norm() : 0.0;
+  const bool lateral_too_fast = params_.brake_speed > 0.0 &&
+                                lateral > std::max(params_.brake_speed, 0.25 * params_.cruise_speed);
+  if (lateral_too_fast && (mode_ == Mode::align || mode_ == Mode::accelerate || mode_ == Mode::coast)) {
+    next = Mode::brake;
+    return TransitionReason::lateral_speed;
+  }
   switch (mode_) {
     case Mode::accelerate:
       // Acceleration also ends when the flip is already due: on a short leg (a re-plan, or a

@@ -65,6 +65,10 @@ enum class TransitionReason : int {
   /// Beyond the paper: closing speed ê·v ≤ 0 while coasting or flipping (moving away from the
   /// waypoint, or past it): re-plan (brake first when more than the brake speed is left).
   overshoot,
+  /// Beyond the paper: the speed across the line of sight, ‖v − (ê·v) ê‖, exceeds
+  /// max(brake speed, V_d/4) before braking: thrust along ê would not remove it, so brake to
+  /// rest first and re-plan.
+  lateral_speed,
 };
 
 /// Lower-case name of a transition reason ("pointing_reached", …), waypoint paper Algorithm 1.

@@ -89,7 +89,9 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   limits.mass = mp.mass;
   limits.T_max = mp.T_max;
   limits.f_max = mp.f_max;
-  limits.J_max = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues().maxCoeff();
+  const lie::Vec3 moments = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues();
+  limits.J_max = moments.maxCoeff();
+  limits.J_min = moments.minCoeff();
   limits.max_wheel_torque = sc.max_wheel_torque;
   limits.control_period = sc.control_period;
 
@@ -221,10 +223,10 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
                   " m/s with kappa_d = " + g4(mp.rct.kappa_d) + " (more than twice the accuracy)");
   }
   const double quantum = guidance::rct_speed_quantum(limits);
-  if (quantum > 2.0 * mp.speed_accuracy) {
+  if (quantum > mp.speed_accuracy) {
     g.fail("speed_accuracy", "speed_accuracy " + g4(mp.speed_accuracy) +
                                  " m/s is unreachable: one control period of one RCT changes the "
-                                 "speed by " + g4(quantum) + " m/s (more than twice the accuracy)");
+                                 "speed by " + g4(quantum) + " m/s (more than the accuracy)");
   }
   const double v_left = guidance::main_speed_left(limits, mp.main_cutoff_speed);
   const double s_rct = guidance::rct_stopping_distance(limits, v_left);

@@ -22,14 +22,18 @@ double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexce
   return std::min(c.a_main() * c.control_period, 0.5 * cruise_speed);
 }
 
+double craft_projection_blend_speed(const CraftLimits& c) noexcept {
+  return std::max(0.05, 2.5 * c.a_main() * c.control_period);
+}
+
 double rct_stopping_distance(const CraftLimits& c, double speed) noexcept {
   return speed * speed / c.a_rct();
 }
 
 double craft_replan_distance(const CraftLimits& c, double cutoff_speed, double position_accuracy,
-                             double arrival_radius) noexcept {
+                             double arrival_radius, double slew_time) noexcept {
   return std::max({25.0 * position_accuracy, 10.0 * arrival_radius,
-                   4.0 * rct_stopping_distance(c, cutoff_speed)});
+                   4.0 * rct_stopping_distance(c, cutoff_speed), 0.5 * c.a_rct() * slew_time * slew_time});
 }
 
 control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
@@ -37,13 +41,18 @@ control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_acc
   control::RctPositionGains g;
   g.kappa_d = c.a_rct() / speed_accuracy;
   g.kappa_p = craft_kappa_p(c, g.kappa_d, position_accuracy);
+  // κ_p raised to a_rct/δ_p would steepen the line beyond λ (an underdamped limit cycle of the
+  // on/off thrusters): raise κ_d with it.
+  g.kappa_d = std::max(g.kappa_d, g.kappa_p / craft_rct_slope(c, position_accuracy));
   return g;
 }
 
+double craft_rct_slope(const CraftLimits& c, double position_accuracy) noexcept {
+  return std::min(std::sqrt(c.a_rct() / (12.5 * position_accuracy)), 0.1 / c.control_period);
+}
+
 double craft_kappa_p(const CraftLimits& c, double kappa_d, double position_accuracy) noexcept {
-  const double lambda =
-      std::min(std::sqrt(c.a_rct() / (12.5 * position_accuracy)), 0.1 / c.control_period);
-  return std::max(lambda * kappa_d, c.a_rct() / position_accuracy);
+  return std::max(craft_rct_slope(c, position_accuracy) * kappa_d, c.a_rct() / position_accuracy);
 }
 
 double rct_position_dead_band(const CraftLimits& c, const control::RctPositionGains& g,

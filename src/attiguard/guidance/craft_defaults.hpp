@@ -39,20 +39,32 @@ struct CraftLimits {
 /// on/off engine; the paper's 0.02 m/s), at most half the cruise speed [m/s].
 [[nodiscard]] double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexcept;
 
+/// Speed below which the velocity projection (17)-(22) fades out: max(0.05, 2.5 a T_s) [m/s]
+/// (the paper example's 0.05 m/s; above it, one period of thrust turns v̂ by less than ≈ 0.4 rad,
+/// so x_d = −v̂ does not spin).
+[[nodiscard]] double craft_projection_blend_speed(const CraftLimits& c) noexcept;
+
 /// Distance the RCT need to stop from `speed` at half their authority (the bang-bang threshold
 /// of the allocation): speed²/(a_rct) [m].
 [[nodiscard]] double rct_stopping_distance(const CraftLimits& c, double speed) noexcept;
 
-/// Re-plan distance: max(25 δ_p, 10 δ, 4 × rct_stopping_distance(cut-off speed)) [m], so that the
-/// RCT stop what the main engine leaves well inside it.
+/// Re-plan distance: max(25 δ_p, 10 δ, 4 × rct_stopping_distance(cut-off speed),
+/// a_rct t_slew²/2) [m], so that the RCT stop what the main engine leaves well inside it, and
+/// so that the legs the RCT fly faster than the main engine can flip (half of it: a_rct t_slew²/4,
+/// the RCT's bang-bang distance in one slew time) are left to them.
 [[nodiscard]] double craft_replan_distance(const CraftLimits& c, double cutoff_speed,
-                                           double position_accuracy, double arrival_radius) noexcept;
+                                           double position_accuracy, double arrival_radius,
+                                           double slew_time) noexcept;
 
 /// RCT gains of (28): κ_d = a_rct/δ_v (at the bang-bang threshold f_max/2 an RCT fires once
-/// ‖v‖ ≥ δ_v/2) and κ_p from craft_kappa_p().
+/// ‖v‖ ≥ δ_v/2), κ_p from craft_kappa_p(), then κ_d raised to κ_p/λ if needed so that the
+/// switching line is never steeper than λ = craft_rct_slope().
 [[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
                                                          double position_accuracy) noexcept;
 
+/// Slope λ of the RCT switching line v = λ e: min(√(a_rct/(12.5 δ_p)), 0.1/T_s) [1/s] (see
+/// craft_kappa_p()).
+[[nodiscard]] double craft_rct_slope(const CraftLimits& c, double position_accuracy) noexcept;
 /// κ_p of craft_rct_gains() for a given κ_d [1/s²]: the on/off RCT slide along the switching line
 /// κ_p e = κ_d v, v = λ e; λ = κ_p/κ_d = min(√(a_rct/(12.5 δ_p)), 0.1/T_s) is the steepest line
 /// they can follow from half the default re-plan distance (λ² e ≤ a_rct) and that the sampled

@@ -331,7 +331,13 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
   const Vec3 a_i = in.R_ib * (Vec3(thrust, 0.0, 0.0) + cmd.inputs.f_rct_b) / params_.mass;
   d = evaluate(in, a_i);
   q_last_ = d.q_id;
-  const control::QuaternionPidOutput pid = pid_.step(q_ib, in.omega_b, d.q_id, d.omega_d, in.dt);
+  // A sampled loop cannot follow a frame turning by more than half a radian per period (the
+  // velocity direction of a craft whose thrust quantum a T_s is comparable to its speed, ê next
+  // to the waypoint): the PID gets the feed-forward capped at 0.5/T_s (cmd.omega_d_d stays exact).
+  const double ff_max = 0.5 / in.dt;
+  const double ff = d.omega_d.norm();
+  const Vec3 omega_ff = ff > ff_max ? Vec3(d.omega_d * (ff_max / ff)) : d.omega_d;
+  const control::QuaternionPidOutput pid = pid_.step(q_ib, in.omega_b, d.q_id, omega_ff, in.dt);
   cmd.inputs.tau_b = pid.tau_b;
   cmd.mode = mode_;
   cmd.waypoint = index_;

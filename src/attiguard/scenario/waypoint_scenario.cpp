@@ -153,12 +153,15 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
       "replan_distance",
       paper ? 50.0
             : guidance::craft_replan_distance(limits, mp.main_cutoff_speed, mp.position_accuracy,
-                                              mp.arrival_radius),
+                                              mp.arrival_radius,
+                                              guidance::craft_slew_time(limits, sc.gains)),
       NumberRule::positive());
   mp.brake_speed =
       g.number_or("brake_speed", guidance::default_brake_speed(mp), NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
-  mp.projection.blend_speed = g.number_or("projection_blend_speed", 0.05, NumberRule::positive());
+  mp.projection.blend_speed = g.number_or(
+      "projection_blend_speed", paper ? 0.05 : guidance::craft_projection_blend_speed(limits),
+      NumberRule::positive());
   const double full_deg =
       g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
   mp.projection.cos_full = std::cos(full_deg * kPi / 180.0);

@@ -146,6 +146,23 @@ TEST(WaypointRun, StartingAwayFromTheWaypointTurnsBackInsteadOfCoastingAway) {
               res.waypoints[0].delta_v());
 }
 
+// Issue 13, third bullet: a 5 m arrival radius handed over to the RCT at 0.66 m/s, which they
+// could not stop (3000 s of oscillation). Now fine control is entered only below brake_speed.
+TEST(WaypointRun, LargeArrivalRadiusHandsOverOnlyAtASpeedTheRctCanStop) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/straight_crossing.toml");
+  sc.mission.arrival_radius = 5.0;
+  double worst_entry = 0.0;
+  const WaypointSimResult res =
+      simulate_waypoint(sc, [&](double, const dynamics::SpacecraftState& y, const guidance::MissionCommand& c) {
+        if (c.transition && c.mode == guidance::Mode::fine) {
+          worst_entry = std::max(worst_entry, dynamics::v_i_of(y).norm());
+        }
+      });
+  EXPECT_TRUE(res.completed) << res.total_time;
+  EXPECT_GT(worst_entry, 0.0);
+  EXPECT_LE(worst_entry, sc.mission.brake_speed);
+}
+
 // After an overshoot the re-planned leg used to coast away for ever as well (4350 s to 12000 s,
 // 2170 m away): coasting with a closing speed <= 0 is now an overshoot that re-plans.
 TEST(WaypointRun, CoastingAwayIsAnOvershootThatReplans) {

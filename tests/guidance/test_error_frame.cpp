@@ -175,5 +175,19 @@ TEST(VelocityFrame, ContinuousAcrossTheBlendBoundariesAndFiniteAtSingularities) 
   EXPECT_EQ(anti.weight, 0.0);  // w antiparallel to x_e: projection suppressed, no singular axis
 }
 
+// Issue 13: crossing a waypoint in a straight line makes ê exactly antiparallel to the chart's x
+// axis (n = 0 in the unnormalised form): the frame was NaN and the integrator diverged. It is
+// now the half turn about the chart's z axis, finite, mapping x_b onto ê.
+TEST(ErrorFrame, ExactlyAntiparallelToTheChartStaysFinite) {
+  const Quat q_ir = lie::quat_identity();
+  for (const Vec3& e_dot : {Vec3(1.0, 0.0, 0.0), Vec3(0.3, -0.2, 0.1), Vec3(0.0, 0.0, 0.0)}) {
+    const ErrorFrame f = error_frame(q_ir, Vec3(-2.0, 0.0, 0.0), e_dot);
+    ASSERT_TRUE(f.q_ie.allFinite() && f.omega_e.allFinite());
+    EXPECT_NEAR(f.q_ie.norm(), 1.0, 1e-15);
+    EXPECT_TRUE(lie::quat_to_rotation(f.q_ie).col(0).isApprox(Vec3(-1.0, 0.0, 0.0), 1e-15));
+    EXPECT_LT(f.cos_chart, -1.0 + 1e-15);
+  }
+}
+
 }  // namespace
 }  // namespace attiguard::guidance

@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "attiguard/guidance/mission.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/waypoint_scenario.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 #include "test_support.hpp"
 
@@ -176,6 +179,115 @@ TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
   }
   RecordProperty("completed_within_120s", completed);
   EXPECT_GT(brake_samples, 0);  // the brake mode was exercised
+}
+
+namespace geometry {
+
+/// A `waypoint` scenario (profile "craft": every guidance default derived from the craft) of the
+/// issue-13 spacecraft with the given initial velocity and waypoint list.
+sim::WaypointScenario craft_scenario(const std::string& velocity, const std::string& waypoints) {
+  const std::string text = R"(kind = "waypoint"
+[spacecraft]
+mass = 100.0
+inertia = [20, 20, 20]
+main_thrust = 20.0
+rct_thrust = 0.5
+[initial]
+velocity = )" + velocity + "\n" + waypoints + R"(
+[guidance]
+cruise_speed = 1.0
+arrival_radius = 0.01
+position_accuracy = 0.2
+speed_accuracy = 0.005
+[simulation]
+duration = 4000
+step = 0.1
+)";
+  return scenario::parse_waypoint(scenario::parse_document(text, "geometry.toml"));
+}
+
+double angle_between(const Quat& a, const Quat& b) {
+  return 2.0 * std::acos(std::min(1.0, std::abs(a.dot(b))));
+}
+
+/// Modes whose entry keeps the desired attitude continuous (align, flip and brake are commanded
+/// slews: their entry is a step of R_d by design).
+bool continuous_entry(Mode m) {
+  return m == Mode::accelerate || m == Mode::coast || m == Mode::decelerate || m == Mode::fine ||
+         m == Mode::done;
+}
+
+}  // namespace geometry
+
+TEST(MissionGeometry, DesiredAttitudeAndRateFiniteAndContinuousInEveryGeometry) {
+  struct Case {
+    const char* name;
+    const char* velocity;
+    const char* waypoints;
+  };
+  const std::array<Case, 8> cases{{
+      {"straight crossing", "[0, 0, 0]", "[[waypoints]]\nposition = [100, 0, 0]"},
+      {"crossing at speed", "[2, 0, 0]", "[[waypoints]]\nposition = [60, 0, 0]"},
+      {"reversal (waypoint behind)", "[1, 0, 0]", "[[waypoints]]\nposition = [-80, 0, 0]"},
+      {"receding sideways", "[0.1, 0.5, 0]", "[[waypoints]]\nposition = [-50, 10, 0]"},
+      {"collinear legs", "[0, 0, 0]",
+       "[[waypoints]]\nposition = [50, 0, 0]\n[[waypoints]]\nposition = [120, 0, 0]"},
+      {"anti-parallel legs", "[0, 0, 0]",
+       "[[waypoints]]\nposition = [80, 0, 0]\n[[waypoints]]\nposition = [0, 0, 0]"},
+      {"zero-length leg", "[0, 0, 0]",
+       "[[waypoints]]\nposition = [60, 0, 0]\n[[waypoints]]\nposition = [60, 0, 0]"},
+      {"starting on the waypoint", "[0, 0, 0]",
+       "[[waypoints]]\nposition = [0, 0, 0]\n[[waypoints]]\nposition = [0, 40, 0]"},
+  }};
+  for (const Case& c : cases) {
+    const sim::WaypointScenario sc = geometry::craft_scenario(c.velocity, c.waypoints);
+    bool have_last = false;
+    Quat q_last;
+    lie::Vec3 v_last = lie::Vec3::Zero();
+    double w_last = 0.0;
+    Mode mode_last = Mode::align;
+    int wp_last = 0;
+    double worst_rate = 0.0;
+    int jumps = 0;
+    const sim::WaypointSimResult res = sim::simulate_waypoint(
+        sc, [&](double t, const dynamics::SpacecraftState& y, const MissionCommand& cmd) {
+          ASSERT_TRUE(cmd.q_id.allFinite() && cmd.omega_d_d.allFinite()) << c.name << " t = " << t;
+          worst_rate = std::max(worst_rate, cmd.omega_d_d.norm());
+          const bool same_leg = cmd.waypoint == wp_last;
+          const bool continuous =
+              same_leg && (cmd.transition ? geometry::continuous_entry(cmd.mode) : cmd.mode == mode_last);
+          if (have_last && continuous) {
+            // One period of the feed-forward (or, while braking, of the body and of v̂: x_d = −v̂
+            // is re-aimed from the measured attitude) bounds the change of R_d.
+            const lie::Vec3 v = dynamics::v_i_of(y);
+            const double turn_of_v =
+                cmd.mode == Mode::brake && v_last.norm() > 0.0 && v.norm() > 0.0
+                    ? std::acos(std::clamp(v.normalized().dot(v_last.normalized()), -1.0, 1.0))
+                    : 0.0;
+            const double bound = 2.0 * sc.control_period *
+                                     (w_last + cmd.omega_d_d.norm() + dynamics::omega_b_of(y).norm()) +
+                                 1.5 * turn_of_v + 1e-6;
+            if (geometry::angle_between(q_last, cmd.q_id) > bound) ++jumps;
+            EXPECT_LE(geometry::angle_between(q_last, cmd.q_id), bound)
+                << c.name << " t = " << t << " mode " << mode_name(cmd.mode);
+          }
+          have_last = true;
+          v_last = dynamics::v_i_of(y);
+          q_last = cmd.q_id;
+          w_last = cmd.omega_d_d.norm();
+          mode_last = cmd.mode;
+          wp_last = cmd.waypoint;
+        });
+    EXPECT_TRUE(res.finite) << c.name;
+    EXPECT_TRUE(res.completed) << c.name << ": " << res.total_time << " s";
+    EXPECT_LT(worst_rate, 10.0) << c.name;
+    for (const sim::WaypointResult& w : res.waypoints) {
+      EXPECT_LT(w.final_position_error, sc.mission.position_accuracy) << c.name;
+      EXPECT_LT(w.final_speed, sc.mission.speed_accuracy) << c.name;
+    }
+    std::printf("%-28s completed %d in %7.1f s, %zu transitions, max |omega_d| %.3g rad/s\n", c.name,
+                res.completed ? 1 : 0, res.total_time, res.transitions.size(), worst_rate);
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -11,7 +13,113 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/sim/mission_run.hpp"
 #include "cli_runner.hpp"
+
+namespace {
+
+attiguard::sim::MissionScenario load_mission_example() {
+  return attiguard::scenario::parse_mission(attiguard::scenario::load_document(
+      std::string(ATTIGUARD_SOURCE_DIR) + "/examples/mission_sun_constrained.toml"));
+}
+
+}  // namespace
+
+// Issue 13: the cost of the constraints is reported only when both flights completed (it was
+// −3.17 m/s for an incomplete constrained flight), and a numerical failure of one flight keeps
+// the other's results, with the failure named.
+TEST(MissionRun, CostsOnlyWhenBothFlightsCompletedAndAFailedTwinKeepsTheOwnResults) {
+  using namespace attiguard;
+  const sim::MissionScenario sc = load_mission_example();
+  sim::MissionFlights f;
+  f.own = sim::simulate_mission(sc, governor::GovernorMode::pet);
+  f.twin = sim::simulate_mission(sc, governor::GovernorMode::none);
+  ASSERT_TRUE(f.own.flight.completed && f.twin.flight.completed);
+  const nlohmann::json ok = sim::mission_summary(sc, f);
+  EXPECT_EQ(ok["outcome"], "completed");
+  EXPECT_TRUE(ok["time_cost"].is_number());
+  EXPECT_FALSE(ok.contains("outcome_reason"));
+
+  // The unconstrained twin cut short: incomplete, with a reason; no cost.
+  sim::MissionScenario short_sc = sc;
+  short_sc.waypoint.duration = 200.0;
+  sim::MissionFlights partial = f;
+  partial.twin = sim::simulate_mission(short_sc, governor::GovernorMode::none);
+  ASSERT_FALSE(partial.twin.flight.completed);
+  const nlohmann::json inc = sim::mission_summary(sc, partial);
+  EXPECT_EQ(inc["outcome"], "completed");
+  EXPECT_EQ(inc["unconstrained"]["outcome"], "incomplete");
+  EXPECT_NE(inc["unconstrained"]["outcome_reason"].get<std::string>().find("time out at 200.0 s"),
+            std::string::npos)
+      << inc["unconstrained"]["outcome_reason"];
+  EXPECT_TRUE(inc["time_cost"].is_null());
+  EXPECT_TRUE(inc["delta_v_cost"].is_null());
+
+  // The twin failed numerically: the own flight's figures are all there, the failure named.
+  sim::MissionFlights failed = f;
+  failed.twin = sim::MissionResult{};
+  failed.twin.flight.finite = false;
+  failed.twin.failure = "integrator: non-finite state at t = 1.5 s (divergence)";
+  const nlohmann::json fj = sim::mission_summary(sc, failed);
+  EXPECT_EQ(fj["outcome"], "completed");
+  EXPECT_EQ(fj["constrained"]["waypoints_reached"].get<long>(), 2);
+  EXPECT_EQ(fj["unconstrained"]["outcome"], "incomplete");
+  EXPECT_NE(fj["unconstrained"]["outcome_reason"].get<std::string>().find("numerical failure: integrator"),
+            std::string::npos);
+  EXPECT_NE(fj["twin_failure"].get<std::string>().find("divergence"), std::string::npos);
+  EXPECT_TRUE(fj["time_cost"].is_null());
+}
+
+// Issue 13: a 500 kg craft (inertia about 100 kg m^2, 22 N engine, 0.5 N m wheels), a Sun
+// keep-out cone and three waypoints complete with the governor on; the unconstrained twin
+// violates the cone. No [attitude_control] (unused by kind mission) and every guidance key
+// derived from the craft.
+TEST(MissionRun, FiveHundredKilogramCraftCompletesGovernedAndItsTwinViolatesTheCone) {
+  using namespace attiguard;
+  const sim::MissionScenario sc = scenario::parse_mission(scenario::load_document(
+      std::string(ATTIGUARD_SOURCE_DIR) + "/examples/mission_500kg_sun.toml"));
+  EXPECT_EQ(sc.waypoint.profile, sim::GuidanceProfile::craft);
+  const sim::MissionResult con = sim::simulate_mission(sc, governor::GovernorMode::pet);
+  const sim::MissionResult unc = sim::simulate_mission(sc, governor::GovernorMode::none);
+  const sim::WaypointOutcome out = sim::mission_outcome(sc, con);
+  EXPECT_TRUE(out.completed) << out.reason;
+  for (const sim::WaypointResult& w : con.flight.waypoints) {
+    EXPECT_TRUE(w.reached);
+    EXPECT_LT(w.final_position_error, sc.waypoint.mission.position_accuracy);
+  }
+  EXPECT_GE(con.min_pointing_margin, 0.0);
+  EXPECT_EQ(con.torque_violations, 0);
+  EXPECT_LT(unc.min_pointing_margin, 0.0);
+  EXPECT_TRUE(unc.flight.completed);
+  std::printf("[ measured ] 500 kg mission: governed %.1f s, %.4f m/s, margin %+.4f; twin %.1f s, "
+              "margin %+.4f (violation from t = %.1f s)\n",
+              con.flight.total_time, con.delta_v(), con.min_pointing_margin, unc.flight.total_time,
+              unc.min_pointing_margin, unc.first_pointing_violation_time);
+}
+
+// Issue 13: a leg whose steady desired attitude lies in a cone's repulsive band is rejected
+// before flying (kind pet_erg rejects such an R_d): here the star tracker (+y_b) ends the first
+// align slew pointing along -x, where the Sun is.
+TEST(MissionRun, DesiredAttitudeInARepulsiveBandIsRejectedBeforeFlying) {
+  using namespace attiguard;
+  std::string text = attiguard::test::read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) /
+                                                "examples/mission_500kg_sun.toml");
+  const std::string from = "direction_i = [-1.0, 1.0, 0.3]";
+  text.replace(text.find(from), from.size(), "direction_i = [-1.0, 0.1, 0.0]");
+  try {
+    (void)scenario::parse_mission(scenario::parse_document(text, "sun_on_leg.toml"));
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("waypoints[0].position: the desired attitude of leg 0 (x_b towards the "
+                        "waypoint) lies inside cones[0]"),
+              std::string::npos)
+        << what;
+  }
+}
 
 #ifdef ATTIGUARD_CLI_PATH
 

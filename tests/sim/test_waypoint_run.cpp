@@ -117,6 +117,96 @@ TEST(WaypointRun, OneDegreeEngineMisalignmentStillReachesEveryWaypoint) {
   EXPECT_FALSE(simulate_waypoint(printed).completed);
 }
 
+// Issue 13, first bullet: flying straight through the waypoint diverged (exit 3, "integrator:
+// non-finite state at t = 102.51 s"): the reversed error direction of the flip became exactly
+// antiparallel to its chart (n = 0 in error_frame()). Now the crossing is an overshoot that
+// brakes and re-plans, and the run completes within its accuracy.
+TEST(WaypointRun, StraightCrossingOfTheWaypointCompletesWithoutNan) {
+  const sim::WaypointScenario sc = load("tests/data/waypoint/straight_crossing.toml");
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.finite);
+  ASSERT_TRUE(res.completed) << res.total_time;
+  EXPECT_LT(res.waypoints[0].final_position_error, sc.mission.position_accuracy);
+  EXPECT_LT(res.waypoints[0].final_speed, sc.mission.speed_accuracy);
+  std::printf("[ measured ] straight crossing: %.1f s, delta-v %.3f m/s\n", res.total_time,
+              res.waypoints[0].delta_v());
+}
+
+// Issue 13, second bullet: starting with a velocity away from the waypoint, (13) tested ‖v‖ and
+// the craft coasted away for 3000 s (850 m off, Δv 0, exit 0). Decisions now use the closing
+// speed: the craft turns back and arrives.
+TEST(WaypointRun, StartingAwayFromTheWaypointTurnsBackInsteadOfCoastingAway) {
+  const sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.finite);
+  ASSERT_TRUE(res.completed) << res.total_time;
+  EXPECT_LT(res.waypoints[0].final_position_error, sc.mission.position_accuracy);
+  EXPECT_GT(res.waypoints[0].delta_v(), 0.45);  // at least the 0.25 m/s away + 0.2 m/s towards
+  std::printf("[ measured ] receding start: %.1f s, delta-v %.3f m/s\n", res.total_time,
+              res.waypoints[0].delta_v());
+}
+
+// Issue 13, third bullet: a 5 m arrival radius handed over to the RCT at 0.66 m/s, which they
+// could not stop (3000 s of oscillation). Now fine control is entered only below brake_speed.
+TEST(WaypointRun, LargeArrivalRadiusHandsOverOnlyAtASpeedTheRctCanStop) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/straight_crossing.toml");
+  sc.mission.arrival_radius = 5.0;
+  double worst_entry = 0.0;
+  const WaypointSimResult res =
+      simulate_waypoint(sc, [&](double, const dynamics::SpacecraftState& y, const guidance::MissionCommand& c) {
+        if (c.transition && c.mode == guidance::Mode::fine) {
+          worst_entry = std::max(worst_entry, dynamics::v_i_of(y).norm());
+        }
+      });
+  EXPECT_TRUE(res.completed) << res.total_time;
+  EXPECT_GT(worst_entry, 0.0);
+  EXPECT_LE(worst_entry, sc.mission.brake_speed);
+}
+
+// After an overshoot the re-planned leg used to coast away for ever as well (4350 s to 12000 s,
+// 2170 m away): coasting with a closing speed <= 0 is now an overshoot that re-plans.
+TEST(WaypointRun, CoastingAwayIsAnOvershootThatReplans) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  sc.R0_ib = lie::quat_to_rotation(lie::Quat(0.0, 0.0, 0.0, 1.0));  // x_b away from the waypoint
+  sc.v0_i = lie::Vec3(-0.5, 0.0, 0.0);
+  bool coasted_away = false;
+  const WaypointSimResult res =
+      simulate_waypoint(sc, [&](double, const dynamics::SpacecraftState& y, const guidance::MissionCommand& c) {
+        const lie::Vec3 e = sc.waypoints_i[0] - dynamics::p_i_of(y);
+        if (c.mode == guidance::Mode::coast && guidance::closing_speed(e, dynamics::v_i_of(y)) < -1e-3) {
+          coasted_away = true;
+        }
+      });
+  EXPECT_FALSE(coasted_away);
+  EXPECT_TRUE(res.completed) << res.total_time;
+}
+
+// Issue 13: an honest outcome. A run cut short says `incomplete` and why, with the distance and
+// speed left; a completed one says `completed` and no reason.
+TEST(WaypointRun, OutcomeIsCompletedOrIncompleteWithTheReasonAndWhatIsLeft) {
+  sim::WaypointScenario sc = load("tests/data/waypoint/coasting_away.toml");
+  const nlohmann::json done = waypoint_summary(sc, simulate_waypoint(sc));
+  EXPECT_EQ(done["outcome"], "completed");
+  EXPECT_FALSE(done.contains("outcome_reason"));
+  sc.duration = 300.0;
+  const WaypointSimResult cut = simulate_waypoint(sc);
+  const nlohmann::json j = waypoint_summary(sc, cut);
+  EXPECT_EQ(j["outcome"], "incomplete");
+  const std::string why = j["outcome_reason"].get<std::string>();
+  EXPECT_NE(why.find("time out at 300.0 s"), std::string::npos) << why;
+  char left[64];
+  std::snprintf(left, sizeof left, "%.3f m away", cut.final_distance);
+  EXPECT_NE(why.find(left), std::string::npos) << why;
+  EXPECT_GT(cut.final_distance, 1.0);
+
+  // Moving away at the end is named as such.
+  sc.v0_i = lie::Vec3(-0.25, 0.0, 0.0);
+  sc.duration = 0.5;  // still receding: 0.5 s of thrust take 0.1 of the 0.25 m/s
+  const WaypointSimResult away = simulate_waypoint(sc);
+  EXPECT_NE(waypoint_outcome(sc, away).reason.find("moving away"), std::string::npos)
+      << waypoint_outcome(sc, away).reason;
+}
+
 TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {
   // (14) holds along a line: braking on ‖e‖ with a lateral offset passes the closest point with
   // speed left, which κ_p = 0 cannot take back (Algorithm 1 as printed: no brake mode).
@@ -209,6 +299,25 @@ TEST(WaypointCli, BadScenarioExitsWithCode2) {
   std::filesystem::remove_all(dir);
 }
 #endif
+
+// Issue 13: `check` refuses what the craft cannot fly, with the reason and the number.
+TEST(WaypointScenario, RejectsMissionsTheCraftCannotFly) {
+  // κ_p so small that the RCT stop firing 2.5 m from the waypoint: δ_p = 0.2 m is out of reach.
+  expect_input_error(example_with("waypoint_fine.toml", {{"kappa_p = 0.02", "kappa_p = 0.001"}}),
+                     "fine_position.kappa_p: position_accuracy 0.2 m is unreachable: the RCT (0.005 m/s^2) "
+                     "stop firing within 2.5 m of the waypoint");
+  // Wheels too weak to flip: a half turn at 2e-4 N m takes 2√(π·20/2e-4) = 1121 s per leg.
+  expect_input_error(example_with("waypoint_fine.toml", {{"max_wheel_torque = 5.0", "max_wheel_torque = 0.0002"}}),
+                     "plus 3363 s of flips at max_wheel_torque 0.0002 N m");
+  // The paper profile keeps the paper's defaults: the same file without the keys it sets.
+  const sim::WaypointScenario paper = scenario::parse_waypoint(scenario::parse_document(
+      example_with("waypoint_paper.toml", {{"pointing_tolerance = 1e-6", ""}, {"braking_margin = 0.95", ""}}),
+      "paper.toml"));
+  EXPECT_EQ(paper.mission.pointing_tolerance, 1e-6);
+  EXPECT_EQ(paper.mission.braking_margin, 1.0);  // (16) as printed
+  EXPECT_FALSE(paper.mission.pointing_thrust_axis);
+  EXPECT_EQ(paper.mission.flip_timing, guidance::FlipTiming::immediate);
+}
 
 }  // namespace
 }  // namespace attiguard::sim

@@ -66,6 +66,18 @@ nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
                        [&](io::RowSink& rows) { return Summarize(config, Simulate(config, rows)); });
 }
 
+/// `run` of kind mission: both flights' results are written even when one failed numerically;
+/// then a failure of the scenario's own flight exits 3 (NumericalError) naming it.
+nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
+  nlohmann::json summary =
+      run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>(doc, options);
+  if (summary.contains("failure") && summary["failure"].is_string()) {
+    throw NumericalError("mission: " + summary["failure"].get<std::string>() +
+                         " (summary.json written with the twin's results)");
+  }
+  return summary;
+}
+
 // Reachability is an analysis, not a simulation: it has its own subcommand and outputs.
 nlohmann::json run_reach(const Document& doc, const RunOptions&) {
   scenario::fail_at(doc, "kind", "scenario kind 'reach' is analysed with `attiguard reach " +
@@ -88,8 +100,7 @@ constexpr std::array<KindHandler, 5> registry{{
     {"mission",
      "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
      "slews; also flies the unconstrained twin",
-     &check_kind<&scenario::parse_mission>,
-     &run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>},
+     &check_kind<&scenario::parse_mission>, &run_mission},
     {"reach",
      "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
      &check_kind<&scenario::parse_reach>, &run_reach},

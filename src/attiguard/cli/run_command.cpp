@@ -78,6 +78,12 @@ void print_summary(const nlohmann::json& summary, const std::string& scenario,
   auto shown_scalar = [](const nlohmann::json& v) { return v.is_primitive() && !v.is_null(); };
   std::size_t shown = 0;
   if (summary.is_object()) {
+    // The outcome of a flight (completed / incomplete, converged, …) and why, first and on
+    // lines of their own; they do not count as figures.
+    for (const char* key : {"outcome", "outcome_reason"}) {
+      const auto it = summary.find(key);
+      if (it != summary.end() && it->is_string()) std::cout << key << ": " << it->get<std::string>() << '\n';
+    }
     for (std::string_view key : kHeadlineKeys) {
       const auto it = summary.find(std::string(key));
       if (it == summary.end() || !shown_scalar(*it)) continue;
@@ -86,7 +92,10 @@ void print_summary(const nlohmann::json& summary, const std::string& scenario,
     }
     if (shown == 0) {
       for (const auto& [key, value] : summary.items()) {
-        if (key == "name" || key == "kind" || key == "wall_time_s") continue;
+        if (key == "name" || key == "kind" || key == "wall_time_s" || key == "outcome" ||
+            key == "outcome_reason") {
+          continue;
+        }
         if (!shown_scalar(value) || shown == kMaxFigures) continue;
         std::cout << "  " << key << ": " << format_scalar(value) << '\n';
         ++shown;

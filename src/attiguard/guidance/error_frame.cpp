@@ -5,6 +5,12 @@
 
 namespace attiguard::guidance {
 
+namespace {
+/// ‖n‖² below which the error direction counts as antiparallel to the chart's x axis
+/// (‖n‖² = 2(1 + cos ϑ): ϑ within ≈ 1.4e-6 rad of π).
+constexpr double kAntiparallelFloor = 1e-12;
+}  // namespace
+
 ErrorFrame error_frame(const Quat& q_ir, const Vec3& e_i, const Vec3& e_dot_i,
                        double e_floor) noexcept {
   ErrorFrame out;
@@ -28,6 +34,13 @@ ErrorFrame error_frame(const Quat& q_ir, const Vec3& e_i, const Vec3& e_dot_i,
   n_dot(0) = x.dot(u_dot);
   n_dot.tail<3>() = x.cross(u_dot);
   out.cos_chart = x.dot(u);
+  if (!(n.squaredNorm() > kAntiparallelFloor)) {
+    // ê (anti)parallel to −x of the chart: n → 0 and the shortest arc is not unique (ϑ = π,
+    // erratum 3). Take the half turn about the chart's z axis, the limit of n/‖n‖ along x × u
+    // ∥ z; its rate is that of the normalised form (finite, as ‖n‖ = 1 here). The guidance never
+    // stays here: it re-anchors its chart as soon as cos ϑ < 0 (docs/waypoint.md, "Charts").
+    n = Quat(0.0, 0.0, 0.0, 1.0);
+  }
   out.q_ie = lie::quat_multiply(q_ir, n / n.norm());
   out.omega_e = angular_velocity_of_unnormalised(n, n_dot);
   return out;

@@ -36,6 +36,8 @@ const char* reason_name(TransitionReason reason) noexcept {
     case TransitionReason::speed_left: return "speed_left";
     case TransitionReason::braked: return "braked";
     case TransitionReason::replan: return "replan";
+    case TransitionReason::overshoot: return "overshoot";
+    case TransitionReason::lateral_speed: return "lateral_speed";
   }
   return "?";
 }
@@ -80,7 +82,11 @@ void Mission::start_leg(const MissionInputs& in) noexcept {
     chart_accel_ = -chart_accel_;
   }
   chart_decel_ = chart_accel_;
-  mode_ = leg_distance_ <= params_.arrival_radius ? Mode::fine : Mode::align;
+  // A leg inside half the re-plan distance, started slowly enough for the RCT, is flown by fine
+  // control (28) alone: the main engine's speed quantum is too coarse for it.
+  const bool rct_leg = params_.rct.kappa_p > 0.0 && leg_distance_ <= 0.5 * params_.replan_distance &&
+                       !brake_needed(in.v_i.norm());
+  mode_ = leg_distance_ <= params_.arrival_radius || rct_leg ? Mode::fine : Mode::align;
   q_hold_ = chart_accel_;
 }
 
@@ -106,39 +112,70 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
   const Vec3 e_i = waypoints_[static_cast<std::size_t>(index_)] - in.p_i;
   const double dist = e_i.norm();
   const double speed = in.v_i.norm();
-  const double a_max = params_.T_max / params_.mass;
+  const double closing = closing_speed(e_i, in.v_i);
   const bool accel_distance_done =
       dist < (1.0 - params_.acceleration_fraction) * leg_distance_;
-  // braking_point timing: the flip must start flip_lead_time before braking must begin.
-  const bool flip_due = dist - speed * speed / (2.0 * a_max) <= speed * params_.flip_lead_time;
+  // The flip must start flip_lead_time before braking must begin: the predicted stopping
+  // distance at the closing speed (not ‖v‖: lateral or receding motion does not bring the
+  // craft closer) plus the distance flown during the flip.
+  const bool flip_due =
+      closing > 0.0 && dist - stopping_distance(closing, params_) <= closing * params_.flip_lead_time;
+  // Moving away from the waypoint (or past it) while not braking: re-plan, never coast away.
+  auto overshoot = [&](Mode after_slow) {
+    next = brake_needed(speed) ? Mode::brake : after_slow;
+    return TransitionReason::overshoot;
+  };
+  // Speed across the line of sight that thrust along ê cannot take out: brake to rest first.
+  const double lateral = dist > 0.0 ? (in.v_i - e_i * (e_i.dot(in.v_i) / (dist * dist))).norm() : 0.0;
+  const bool lateral_too_fast = params_.brake_speed > 0.0 &&
+                                lateral > std::max(params_.brake_speed, 0.25 * params_.cruise_speed);
+  if (lateral_too_fast && (mode_ == Mode::align || mode_ == Mode::accelerate || mode_ == Mode::coast)) {
+    next = Mode::brake;
+    return TransitionReason::lateral_speed;
+  }
   switch (mode_) {
     case Mode::accelerate:
-      // With braking_point timing, acceleration also ends when the flip is already due: on a
-      // short leg (a re-plan) the fraction rule alone would leave no room to flip and brake.
-      if (accel_distance_done || (params_.flip_timing == FlipTiming::braking_point && flip_due)) {
+      // Acceleration also ends when the flip is already due: on a short leg (a re-plan, or a
+      // fast start) the fraction rule alone would leave no room to flip and brake.
+      if ((accel_distance_done && closing > 0.0) || flip_due) {
         next = Mode::coast;
         return TransitionReason::acceleration_done;
       }
-      if (speed > params_.cruise_speed) {
+      if (closing > params_.cruise_speed) {
         next = Mode::coast;
         return TransitionReason::cruise_speed_reached;
       }
       break;
     case Mode::coast: {
-      bool flip = false;
-      if (params_.flip_timing == FlipTiming::immediate) {
-        flip = accel_distance_done;
-      } else {
-        flip = flip_due;
+      if (!(closing > 0.0)) {
+        return overshoot(Mode::align);
       }
+      const bool flip = flip_due || (params_.flip_timing == FlipTiming::immediate && accel_distance_done);
       if (flip) {
         next = Mode::flip;
         return TransitionReason::flip_point;
       }
       break;
     }
-    case Mode::decelerate:
+    case Mode::flip:
+      // Passed the waypoint (or drifting away) before the flip is over: the reversed error
+      // direction would swing through π; brake against v or hand over to fine control.
+      if (!(closing > 0.0) && dist > params_.arrival_radius) {
+        return overshoot(Mode::fine);
+      }
       if (dist <= params_.arrival_radius) {
+        if (brake_needed(speed)) {
+          next = Mode::brake;
+          return TransitionReason::speed_left;
+        }
+        next = Mode::fine;
+        return TransitionReason::arrival_sphere;
+      }
+      break;
+    case Mode::decelerate:
+      // Hand over to the RCT only at a speed they can remove (brake_speed); faster, keep braking
+      // with (16), which fires harder the closer the waypoint.
+      if (dist <= params_.arrival_radius && !brake_needed(speed)) {
         next = Mode::fine;
         return TransitionReason::arrival_sphere;
       }
@@ -182,7 +219,6 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
       break;
     }
     case Mode::align:
-    case Mode::flip:
     case Mode::done:
       break;
   }
@@ -270,7 +306,9 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
   const bool pointed = pointing < params_.pointing_tolerance;
   double thrust = 0.0;
   if (pointed && mode_ == Mode::accelerate) {
-    thrust = acceleration_thrust(speed, params_.cruise_speed, params_.T_max);  // (13)
+    // (13) on the closing speed: a craft receding (or drifting sideways) faster than V_d still
+    // has to be brought towards the waypoint.
+    thrust = acceleration_thrust(closing_speed(e_i, in.v_i), params_.cruise_speed, params_.T_max);
   } else if (pointed && mode_ == Mode::decelerate) {
     // (14) holds along a line: the distance that the braking must cover is the distance to the
     // point of closest approach, e·v̂ (= ‖e‖ when v points at the waypoint).
@@ -293,7 +331,13 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
   const Vec3 a_i = in.R_ib * (Vec3(thrust, 0.0, 0.0) + cmd.inputs.f_rct_b) / params_.mass;
   d = evaluate(in, a_i);
   q_last_ = d.q_id;
-  const control::QuaternionPidOutput pid = pid_.step(q_ib, in.omega_b, d.q_id, d.omega_d, in.dt);
+  // A sampled loop cannot follow a frame turning by more than half a radian per period (the
+  // velocity direction of a craft whose thrust quantum a T_s is comparable to its speed, ê next
+  // to the waypoint): the PID gets the feed-forward capped at 0.5/T_s (cmd.omega_d_d stays exact).
+  const double ff_max = 0.5 / in.dt;
+  const double ff = d.omega_d.norm();
+  const Vec3 omega_ff = ff > ff_max ? Vec3(d.omega_d * (ff_max / ff)) : d.omega_d;
+  const control::QuaternionPidOutput pid = pid_.step(q_ib, in.omega_b, d.q_id, omega_ff, in.dt);
   cmd.inputs.tau_b = pid.tau_b;
   cmd.mode = mode_;
   cmd.waypoint = index_;

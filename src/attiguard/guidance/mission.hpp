@@ -41,10 +41,11 @@ inline constexpr int kModeCount = 8;
 /// Lower-case name of a mode ("align", …) of the waypoint paper's Algorithm 1 as a state machine.
 [[nodiscard]] const char* mode_name(Mode mode) noexcept;
 
-/// When the coast ends and the flip starts.
+/// When the coast ends and the flip starts. Both also flip when the braking point is due (the
+/// predicted stopping distance, see flip_due()), so a craft already fast never coasts past it.
 enum class FlipTiming {
   immediate,      ///< as the paper: as soon as the acceleration fraction of the leg is covered
-  braking_point,  ///< when ‖e‖ − ‖v‖²/(2 T_max/m) ≤ ‖v‖ · flip_lead_time
+  braking_point,  ///< when ‖e‖ − v_c²/(2 γ T_max/m) ≤ v_c · flip_lead_time (v_c closing speed)
 };
 
 /// Why a transition happened.
@@ -61,6 +62,13 @@ enum class TransitionReason : int {
   replan,                ///< fine control: ‖e‖ > replan distance, the leg restarts with align
   speed_left,            ///< ‖v‖ > brake speed at a closest approach or a re-plan: brake first
   braked,                ///< brake: ‖v‖ ≤ main-engine cut-off speed
+  /// Beyond the paper: closing speed ê·v ≤ 0 while coasting or flipping (moving away from the
+  /// waypoint, or past it): re-plan (brake first when more than the brake speed is left).
+  overshoot,
+  /// Beyond the paper: the speed across the line of sight, ‖v − (ê·v) ê‖, exceeds
+  /// max(brake speed, V_d/4) before braking: thrust along ê would not remove it, so brake to
+  /// rest first and re-plan.
+  lateral_speed,
 };
 
 /// Lower-case name of a transition reason ("pointing_reached", …), waypoint paper Algorithm 1.
@@ -100,6 +108,19 @@ struct MissionParams {
 /// the RCT alone stop within half the re-plan distance.
 [[nodiscard]] inline double default_brake_speed(const MissionParams& p) noexcept {
   return std::sqrt(p.replan_distance * p.f_max / p.mass);
+}
+
+/// Closing speed towards the waypoint, v_c = ê·v with ê = e/‖e‖ (0 when e = 0) [m/s]: the speed
+/// the guidance's decisions use (docs/waypoint.md, "State machine"), not ‖v‖.
+[[nodiscard]] inline double closing_speed(const Vec3& e_i, const Vec3& v_i) noexcept {
+  const double d = e_i.norm();
+  return d > 0.0 ? e_i.dot(v_i) / d : 0.0;
+}
+
+/// Predicted stopping distance at the closing speed v_c with the braking margin γ of (16):
+/// v_c²/(2 γ T_max/m) for v_c > 0, else 0 [m] (waypoint paper (14) with final speed 0).
+[[nodiscard]] inline double stopping_distance(double closing, const MissionParams& p) noexcept {
+  return closing > 0.0 ? closing * closing / (2.0 * p.braking_margin * p.T_max / p.mass) : 0.0;
 }
 
 /// Measured state at a control sample.

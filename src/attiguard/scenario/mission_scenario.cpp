@@ -3,12 +3,57 @@
 
 #include "attiguard/scenario/mission_scenario.hpp"
 
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "attiguard/guidance/leg_attitudes.hpp"
+
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
 
 namespace attiguard::scenario {
+
+namespace {
+
+std::string g4(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+/// Rejects a mission whose predicted steady desired attitude (guidance/leg_attitudes.hpp) violates
+/// a cone or lies in its repulsive band (c < ζ, PET-ERG paper's navigation field): the governed
+/// reference could never converge to it, so the flight would stall (as kind pet_erg rejects such
+/// an R_d). Reported at the waypoint's position.
+void check_leg_attitudes(const TableReader& root, const sim::MissionScenario& sc) {
+  const sim::WaypointScenario& w = sc.waypoint;
+  const std::vector<guidance::LegAttitude> legs = guidance::nominal_leg_attitudes(
+      w.R0_ib, w.p0_i, w.waypoints_i, std::max(w.mission.arrival_radius, 0.5 * w.mission.replan_distance));
+  if (legs.empty() || sc.cones.empty()) return;
+  const std::vector<TableReader> wps = root.array_of_tables("waypoints");
+  for (const guidance::LegAttitude& leg : legs) {
+    for (std::size_t i = 0; i < sc.cones.size(); ++i) {
+      const governor::ConeConstraint& cone = sc.cones[i];
+      const double c = governor::cone_cosine(cone, leg.R_id);
+      if (c < cone.zeta) {
+        wps[static_cast<std::size_t>(leg.waypoint)].fail(
+            "position", std::string("the desired attitude of leg ") + std::to_string(leg.waypoint) +
+                            (leg.braking ? " while braking (x_b away from the waypoint)"
+                                         : " (x_b towards the waypoint)") +
+                            " lies " + (c < cone.cos_theta_c ? "inside" : "in the repulsive band of") +
+                            " cones[" + std::to_string(i) + "] (a_c^T R_d a_b = " + g4(c) +
+                            " < zeta = " + g4(cone.zeta) +
+                            "): the governed attitude cannot reach it; move the waypoint or the cone");
+      }
+    }
+  }
+}
+
+}  // namespace
 
 sim::MissionScenario parse_mission(const Document& doc) {
   sim::MissionScenario sc;
@@ -27,6 +72,7 @@ sim::MissionScenario parse_mission(const Document& doc) {
   control.finish();
   sc.cones = parse_cones(root);
   (void)make_governor(root, "control", sc.params, sc.cones);
+  check_leg_attitudes(root, sc);
   return sc;
 }
 

@@ -5,8 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
+#include <optional>
 
+#include <Eigen/Eigenvalues>
+
+#include "attiguard/guidance/craft_defaults.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/ephemeris_check.hpp"
@@ -17,6 +22,13 @@ namespace attiguard::scenario {
 namespace {
 
 std::string num(double x) { return detail::format_number(x); }
+
+/// A derived figure in a message: 4 significant digits.
+std::string g4(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
 
 constexpr double kPi = 3.14159265358979323846;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
@@ -68,47 +80,98 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     sc.waypoints_i.push_back(w.vector3("position"));
   }
 
-  const TableReader att = root.table("attitude_control");
-  declare(att, {"kp", "ki", "kd", "integral_zone"});
-  sc.gains.kp = att.number("kp", NumberRule::positive());
-  sc.gains.ki = att.number_or("ki", 0.0, NumberRule::non_negative());
-  sc.gains.kd = att.number("kd", NumberRule::positive());
-  sc.gains.integral_zone = att.number_or("integral_zone", 0.0, NumberRule::non_negative());
-
-  const TableReader fine = root.table("fine_position");
-  declare(fine, {"kappa_p", "kappa_d", "on_threshold"});
-  mp.rct.kappa_p = fine.number_or("kappa_p", 0.0, NumberRule::non_negative());
-  mp.rct.kappa_d = fine.number("kappa_d", NumberRule::positive());
-  mp.rct_threshold = fine.number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
-
+  // [guidance] profile first: it decides the defaults of the other tables.
   const TableReader g = root.table("guidance");
-  declare(g, {"cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
+  sc.profile = enum_or(g, "profile", sim::kGuidanceProfileNames, sim::GuidanceProfile::craft);
+  const bool paper = sc.profile == sim::GuidanceProfile::paper;
+  // The control period is needed by the craft defaults; [simulation] is read in full below.
+  const TableReader sim = root.table("simulation");
+  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
+  guidance::CraftLimits limits;
+  limits.mass = mp.mass;
+  limits.T_max = mp.T_max;
+  limits.f_max = mp.f_max;
+  const lie::Vec3 moments = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues();
+  limits.J_max = moments.maxCoeff();
+  limits.J_min = moments.minCoeff();
+  limits.max_wheel_torque = sc.max_wheel_torque;
+  limits.control_period = sc.control_period;
+
+  // [attitude_control]: required by the paper profile (Table I); derived otherwise.
+  const control::QuaternionPidGains craft_gains = guidance::craft_attitude_gains(limits);
+  if (const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
+                             : root.optional_table("attitude_control")) {
+    declare(*att, {"kp", "ki", "kd", "integral_zone"});
+    sc.gains.kp = paper ? att->number("kp", NumberRule::positive())
+                        : att->number_or("kp", craft_gains.kp, NumberRule::positive());
+    sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
+    sc.gains.kd = paper ? att->number("kd", NumberRule::positive())
+                        : att->number_or("kd", craft_gains.kd, NumberRule::positive());
+    sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
+  } else {
+    sc.gains = craft_gains;
+  }
+
+  declare(g, {"profile", "cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
               "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
               "main_cutoff_speed", "replan_distance", "brake_speed",
               "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
               "flip_timing", "flip_lead_time"});
   mp.cruise_speed = g.number("cruise_speed", NumberRule::positive());
-  mp.acceleration_fraction =
-      g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
-  mp.pointing_tolerance = g.number_or("pointing_tolerance", 1e-6, {0.0, 1.0, true, true});
-  mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, false);
   mp.arrival_radius = g.number("arrival_radius", NumberRule::positive());
   mp.position_accuracy = g.number("position_accuracy", NumberRule::positive());
   mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
-  mp.braking_margin = g.number_or("braking_margin", 1.0, {0.0, 1.0, true, false});
+
+  // [fine_position]: required by the paper profile (κ_d of Table I); derived otherwise.
+  const control::RctPositionGains craft_rct =
+      guidance::craft_rct_gains(limits, mp.speed_accuracy, mp.position_accuracy);
+  mp.rct = craft_rct;
+  const auto fine_table = paper ? std::optional<TableReader>(root.table("fine_position"))
+                                : root.optional_table("fine_position");
+  if (const auto& fine = fine_table) {
+    declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
+    mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
+                           : fine->number_or("kappa_d", craft_rct.kappa_d, NumberRule::positive());
+    // Craft profile: the derived κ_p with the κ_d in force (position control on).
+    mp.rct.kappa_p = fine->number_or(
+        "kappa_p", paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy),
+        NumberRule::non_negative());
+    mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
+  }
+
+  mp.acceleration_fraction =
+      g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
+  mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, !paper);
+  mp.pointing_tolerance = g.number_or(
+      "pointing_tolerance", paper ? 1e-6 : guidance::craft_pointing_tolerance(limits), {0.0, 1.0, true, true});
+  mp.braking_margin = g.number_or(
+      "braking_margin", paper ? 1.0 : guidance::craft_braking_margin(limits, mp.cruise_speed),
+      {0.0, 1.0, true, false});
   mp.brake_along_velocity = enum_or(g, "braking_distance", sim::kBrakingDistanceNames, true);
-  mp.main_cutoff_speed = g.number_or("main_cutoff_speed", 0.02, NumberRule::non_negative());
-  mp.replan_distance = g.number_or("replan_distance", 50.0, NumberRule::positive());
+  mp.main_cutoff_speed = g.number_or(
+      "main_cutoff_speed", paper ? 0.02 : guidance::craft_main_cutoff_speed(limits, mp.cruise_speed),
+      NumberRule::non_negative());
+  mp.replan_distance = g.number_or(
+      "replan_distance",
+      paper ? 50.0
+            : guidance::craft_replan_distance(limits, mp.main_cutoff_speed, mp.position_accuracy,
+                                              mp.arrival_radius,
+                                              guidance::craft_slew_time(limits, sc.gains)),
+      NumberRule::positive());
   mp.brake_speed =
       g.number_or("brake_speed", guidance::default_brake_speed(mp), NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
-  mp.projection.blend_speed = g.number_or("projection_blend_speed", 0.05, NumberRule::positive());
+  mp.projection.blend_speed = g.number_or(
+      "projection_blend_speed", paper ? 0.05 : guidance::craft_projection_blend_speed(limits),
+      NumberRule::positive());
   const double full_deg =
       g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
   mp.projection.cos_full = std::cos(full_deg * kPi / 180.0);
-  mp.flip_timing =
-      enum_or(g, "flip_timing", sim::kFlipTimingNames, guidance::FlipTiming::immediate);
-  mp.flip_lead_time = g.number_or("flip_lead_time", 60.0, NumberRule::non_negative());
+  mp.flip_timing = enum_or(g, "flip_timing", sim::kFlipTimingNames,
+                           paper ? guidance::FlipTiming::immediate : guidance::FlipTiming::braking_point);
+  mp.flip_lead_time = g.number_or(
+      "flip_lead_time", paper ? 60.0 : 1.5 * guidance::craft_slew_time(limits, sc.gains),
+      NumberRule::non_negative());
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",
            "replan_distance (" + num(mp.replan_distance) + ") must exceed arrival_radius (" +
@@ -121,11 +184,9 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     g.fail("main_cutoff_speed", "must be < cruise_speed (" + num(mp.cruise_speed) + ")");
   }
 
-  const TableReader sim = root.table("simulation");
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
                 "rel_tol", "max_step"});
   sc.duration = sim.number("duration", NumberRule::positive());
-  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
   sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
   sc.integrator = parse_integrator_settings(sim);
   if (sc.control_period > sc.duration) {
@@ -144,18 +205,63 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
                     "output rows");
   root.finish();
 
-  // Reachability: every waypoint needs at least the bang-bang time of its leg.
+  // What the craft cannot fly (docs/waypoint.md, "Tuning"): rejected with the reason and the
+  // numbers, before flying.
+  auto fail_fine = [&](const char* fine_key, const char* guidance_key, const std::string& why) {
+    if (fine_table && fine_table->has(fine_key)) fine_table->fail(fine_key, why);
+    g.fail(guidance_key, why);
+  };
+  const double band_p = guidance::rct_position_dead_band(limits, mp.rct, mp.rct_threshold);
+  if (mp.rct.kappa_p > 0.0 && band_p > mp.position_accuracy) {
+    fail_fine("kappa_p", "position_accuracy",
+              "position_accuracy " + g4(mp.position_accuracy) + " m is unreachable: the RCT (" +
+                  g4(limits.a_rct()) + " m/s^2) stop firing within " + g4(band_p) +
+                  " m of the waypoint with kappa_p = " + g4(mp.rct.kappa_p));
+  }
+  const double band_v = guidance::rct_speed_dead_band(limits, mp.rct, mp.rct_threshold);
+  // At the band itself the position term of (28) still fires (waypoint_fine.toml flies at
+  // band = δ_v); twice the accuracy is out of reach.
+  if (band_v > 2.0 * mp.speed_accuracy) {
+    fail_fine("kappa_d", "speed_accuracy",
+              "speed_accuracy " + g4(mp.speed_accuracy) + " m/s is unreachable: the RCT (" +
+                  g4(limits.a_rct()) + " m/s^2) stop firing below " + g4(band_v) +
+                  " m/s with kappa_d = " + g4(mp.rct.kappa_d) + " (more than twice the accuracy)");
+  }
+  const double quantum = guidance::rct_speed_quantum(limits);
+  if (quantum > mp.speed_accuracy) {
+    g.fail("speed_accuracy", "speed_accuracy " + g4(mp.speed_accuracy) +
+                                 " m/s is unreachable: one control period of one RCT changes the "
+                                 "speed by " + g4(quantum) + " m/s (more than the accuracy)");
+  }
+  const double v_left = guidance::main_speed_left(limits, mp.main_cutoff_speed);
+  const double s_rct = guidance::rct_stopping_distance(limits, v_left);
+  if (s_rct > mp.replan_distance) {
+    craft.fail("rct_thrust", "thruster authority too small: the RCT (" + g4(limits.a_rct()) +
+                                 " m/s^2) need " + g4(s_rct) + " m to stop the " + g4(v_left) +
+                                 " m/s the main engine leaves at cut-off, more than "
+                                 "guidance.replan_distance (" + g4(mp.replan_distance) + " m)");
+  }
+
+  // Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
+  // (the flip) at the wheels' torque limit per leg longer than the arrival radius.
   const double a_max = mp.T_max / mp.mass;
+  const double t_flip = guidance::wheel_half_turn_time(limits);
   double t_min = 0.0;
+  double t_flips = 0.0;
   lie::Vec3 from = sc.p0_i;
   for (std::size_t k = 0; k < sc.waypoints_i.size(); ++k) {
-    t_min += 2.0 * std::sqrt((sc.waypoints_i[k] - from).norm() / a_max);
+    const double leg = (sc.waypoints_i[k] - from).norm();
+    t_min += 2.0 * std::sqrt(leg / a_max);
+    if (leg > mp.arrival_radius) t_flips += t_flip;
     from = sc.waypoints_i[k];
-    if (t_min > sc.duration) {
+    if (t_min + t_flips > sc.duration) {
       wps[k].fail("position",
                   "waypoint " + std::to_string(k) + " is unreachable within simulation.duration (" +
                       num(sc.duration) + " s): even bang-bang at T_max/m = " + num(a_max) +
-                      " m/s^2 needs " + num(t_min) + " s to get there");
+                      " m/s^2 needs " + num(t_min) + " s to get there" +
+                      (t_flips > 0.0 ? " plus " + g4(t_flips) + " s of flips at max_wheel_torque " +
+                                           g4(sc.max_wheel_torque) + " N m"
+                                     : std::string()));
     }
   }
   return sc;

@@ -52,8 +52,31 @@ MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode
   auto seen = [&](double t, const dynamics::SpacecraftState& y, const guidance::MissionCommand& cmd) {
     if (observer && last != nullptr) observer(t, y, cmd, *last);
   };
-  res.flight = simulate_waypoint(sc.waypoint, seen, filter);
+  try {
+    res.flight = simulate_waypoint(sc.waypoint, seen, filter);
+  } catch (const NumericalError& e) {
+    res.flight.finite = false;
+    res.failure = e.what();
+  }
+  if (res.failure.empty() && !res.flight.finite) {
+    res.failure = "non-finite state or command during the flight";
+  }
   return res;
+}
+
+WaypointOutcome mission_outcome(const MissionScenario& sc, const MissionResult& r) {
+  WaypointOutcome out;
+  if (!r.failure.empty()) {
+    out.reason = "numerical failure: " + r.failure;
+    return out;
+  }
+  out = waypoint_outcome(sc.waypoint, r.flight);
+  if (!out.completed && r.thrust_gated > 0) {
+    out.reason = "stalled by the constraints: the governor withheld the thrust in " +
+                 std::to_string(r.thrust_gated) + " of " + std::to_string(r.flight.samples) +
+                 " samples (R_g not within align_tolerance of R_d); " + out.reason;
+  }
+  return out;
 }
 
 namespace {
@@ -62,7 +85,10 @@ nlohmann::json flight_json(const MissionScenario& sc, governor::GovernorMode mod
                            const MissionResult& r) {
   nlohmann::json j;
   j["governor"] = std::string(governor::kGovernorModeNames.name(mode));
-  j["completed"] = r.flight.completed;
+  const WaypointOutcome outcome = mission_outcome(sc, r);
+  j["outcome"] = outcome.value();
+  if (!outcome.completed) j["outcome_reason"] = outcome.reason;
+  j["completed"] = outcome.completed;
   j["waypoints_reached"] =
       std::count_if(r.flight.waypoints.begin(), r.flight.waypoints.end(),
                     [](const WaypointResult& w) { return w.reached; });
@@ -77,7 +103,6 @@ nlohmann::json flight_json(const MissionScenario& sc, governor::GovernorMode mod
   j["pointing_constraints_satisfied"] = r.first_pointing_violation_time < 0.0;
   j["torque_limit_satisfied"] = r.torque_violations == 0;
   j["constraints_satisfied"] = r.first_pointing_violation_time < 0.0 && r.torque_violations == 0;
-  (void)sc;
   return j;
 }
 
@@ -112,12 +137,11 @@ MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows) {
   MissionFlights f;
   f.mode = mode;
   f.twin_mode = twin_mode;
+  // A numerical failure of one flight does not lose the other's results: each is recorded in
+  // its MissionResult::failure and named in the summary (kinds.cpp then exits 3 when the
+  // scenario's own flight failed).
   f.own = simulate_mission(sc, mode, rows.wants_rows() ? MissionObserver(observer) : MissionObserver{});
   f.twin = simulate_mission(sc, twin_mode);
-  if (!f.own.flight.finite || !f.twin.flight.finite) {
-    rows.end();
-    throw NumericalError("mission: non-finite state or command during the run");
-  }
   return f;
 }
 
@@ -153,8 +177,17 @@ nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& 
   summary["waypoints"] = wps;
   summary["constrained"] = flight_json(sc, own_constrained ? mode : twin_mode, con);
   summary["unconstrained"] = flight_json(sc, governor::GovernorMode::none, unc);
-  summary["time_cost"] = con.flight.total_time - unc.flight.total_time;
-  summary["delta_v_cost"] = con.delta_v() - unc.delta_v();
+  // The cost of the constraints only compares two completed flights.
+  const bool both = mission_outcome(sc, con).completed && mission_outcome(sc, unc).completed;
+  summary["time_cost"] = both ? nlohmann::json(con.flight.total_time - unc.flight.total_time)
+                              : nlohmann::json(nullptr);
+  summary["delta_v_cost"] = both ? nlohmann::json(con.delta_v() - unc.delta_v()) : nlohmann::json(nullptr);
+  if (!own.failure.empty()) summary["failure"] = "flight with governor '" +
+                                                 std::string(governor::kGovernorModeNames.name(mode)) +
+                                                 "': " + own.failure;
+  if (!twin.failure.empty()) summary["twin_failure"] = "twin with governor '" +
+                                                       std::string(governor::kGovernorModeNames.name(twin_mode)) +
+                                                       "': " + twin.failure;
   return summary;
 }
 

@@ -7,6 +7,8 @@
 /// the scenario itself is unconstrained) so the summary gives the cost of the constraints.
 
 
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "attiguard/io/row_sink.hpp"
@@ -23,6 +25,9 @@ struct MissionResult {
   double max_torque_norm{0.0};       ///< max over samples of ‖τ‖ applied [N·m], cf. (2a)
   long torque_violations{0};         ///< samples with ‖τ‖ > τ_max (1e-9 relative tolerance)
   long thrust_gated{0};              ///< samples whose thrust was withheld: R_g not aligned with R_d
+  /// The numerical failure that ended this flight (NumericalError's message), empty if none:
+  /// the other flight's results are still reported (docs/mission.md, "Outcome").
+  std::string failure;
   /// Δv of the flight: Σ over waypoints of ∫T/m + ∫Σf_j/m (waypoint paper, (5)) [m/s].
   [[nodiscard]] double delta_v() const noexcept;
 };
@@ -52,7 +57,13 @@ struct MissionFlights {
 /// Algorithm 1). Throws NumericalError when a state or command is not finite.
 [[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows);
 
+/// The outcome of one flight of a mission: that of its waypoint flight (waypoint_outcome()), or
+/// the numerical failure that ended it, or, when the governor withheld the thrust, "stalled by
+/// the constraints" with the count of gated samples.
+[[nodiscard]] WaypointOutcome mission_outcome(const MissionScenario& sc, const MissionResult& r);
+
 /// The summary.json object of a mission (docs/mission.md, "Outputs"), without wall_time_s.
+/// `time_cost` / `delta_v_cost` are null unless both flights completed.
 [[nodiscard]] nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& f);
 
 }  // namespace attiguard::sim

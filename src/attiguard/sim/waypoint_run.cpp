@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
@@ -85,6 +87,10 @@ WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
     }
     if (cmd.transition) {
       res.transitions.push_back({t, wp_before, cmd.from, cmd.mode, cmd.reason});
+      if (cmd.reason == guidance::TransitionReason::replan ||
+          cmd.reason == guidance::TransitionReason::overshoot) {
+        ++res.replans;
+      }
     }
     if (observer) {
       observer(t, s, cmd);
@@ -111,7 +117,51 @@ WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
     }
   }
   res.completed = mission.done();
+  res.final_mode = mission.mode();
+  res.final_waypoint = mission.waypoint();
+  res.final_speed = dynamics::v_i_of(y).norm();
+  if (res.final_waypoint < n_wp) {
+    const Vec3 e = sc.waypoints_i[static_cast<std::size_t>(res.final_waypoint)] - dynamics::p_i_of(y);
+    res.final_distance = e.norm();
+    res.final_closing_speed = guidance::closing_speed(e, dynamics::v_i_of(y));
+  }
   return res;
+}
+
+namespace {
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+}  // namespace
+
+WaypointOutcome waypoint_outcome(const WaypointScenario& sc, const WaypointSimResult& res) {
+  WaypointOutcome out;
+  out.completed = res.completed && res.finite;
+  if (out.completed) return out;
+  const int n = static_cast<int>(sc.waypoints_i.size());
+  const guidance::MissionParams& mp = sc.mission;
+  std::string why;
+  if (!res.finite) {
+    why = "non-finite state or command";
+  } else if (res.final_mode == guidance::Mode::fine && res.final_distance <= mp.replan_distance) {
+    why = "fine control short of its accuracy (position_accuracy " + fixed(mp.position_accuracy, 3) +
+          " m, speed_accuracy " + fixed(mp.speed_accuracy, 4) + " m/s)";
+  } else if (res.final_closing_speed < 0.0 && res.final_speed > mp.speed_accuracy) {
+    why = "moving away from the waypoint";
+  } else {
+    why = std::string("in mode ") + guidance::mode_name(res.final_mode);
+  }
+  if (res.replans > 0) why += " after " + std::to_string(res.replans) + " re-plan(s)";
+  out.reason = "time out at " + fixed(res.total_time, 1) + " s (simulation.duration " +
+               fixed(sc.duration, 1) + " s): " + why + "; waypoint " +
+               std::to_string(res.final_waypoint + 1) + " of " + std::to_string(n) + " is " +
+               fixed(res.final_distance, 3) + " m away, speed " + fixed(res.final_speed, 4) +
+               " m/s (closing " + fixed(res.final_closing_speed, 4) + " m/s)";
+  return out;
 }
 
 WaypointSimResult record_waypoint(const WaypointScenario& sc, io::RowSink& rows) {
@@ -186,6 +236,9 @@ nlohmann::json waypoint_summary(const WaypointScenario& sc, const WaypointSimRes
   }
   summary["waypoints"] = wps;
   summary["legs"] = legs;
+  const WaypointOutcome outcome = waypoint_outcome(sc, res);
+  summary["outcome"] = outcome.value();
+  if (!outcome.completed) summary["outcome_reason"] = outcome.reason;
   summary["completed"] = res.completed;
   summary["total_time"] = res.total_time;
   summary["total_delta_v"] = total_dv;
@@ -207,6 +260,7 @@ nlohmann::json waypoint_summary(const WaypointScenario& sc, const WaypointSimRes
   summary["mode_names"] = modes;
   const guidance::MissionParams& mp = sc.mission;
   summary["parameters"] = {
+      {"profile", std::string(kGuidanceProfileNames.name(sc.profile))},
       {"mass", mp.mass},
       {"main_thrust", mp.T_max},
       {"rct_thrust", mp.f_max},

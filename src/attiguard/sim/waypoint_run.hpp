@@ -49,7 +49,26 @@ struct WaypointSimResult {
   long steps{0};               ///< accepted integrator steps
   long samples{0};             ///< controller samples
   bool finite{true};           ///< every state and command finite
+  /// The state of the guidance at the end of the run (for the outcome, waypoint_outcome()).
+  guidance::Mode final_mode{guidance::Mode::align};
+  int final_waypoint{0};        ///< active waypoint at the end (= count when done)
+  double final_distance{0.0};   ///< ‖e‖ to the active waypoint at the end [m]
+  double final_speed{0.0};      ///< ‖v‖ at the end [m/s]
+  double final_closing_speed{0.0};  ///< ê·v at the end [m/s] (< 0: moving away)
+  int replans{0};               ///< re-plans and overshoots (a leg restarted or braked off)
 };
+
+/// The honest end of a flight (docs/waypoint.md, "Outcome"): `completed`, or `incomplete` with
+/// one sentence naming why (time out while moving away, fine control short of its accuracy,
+/// repeated re-plans, …) and the distance and speed left.
+struct WaypointOutcome {
+  bool completed{false};
+  std::string reason;  ///< empty when completed
+  [[nodiscard]] const char* value() const noexcept { return completed ? "completed" : "incomplete"; }
+};
+
+/// The outcome of a waypoint flight (waypoint paper, Algorithm 1's termination, judged).
+[[nodiscard]] WaypointOutcome waypoint_outcome(const WaypointScenario& sc, const WaypointSimResult& res);
 
 /// Called at every control sample with the state and the command computed there.
 using SampleObserver =

@@ -27,9 +27,19 @@ inline constexpr NameTable<bool, 2> kPointingErrorNames{{{{false, "quaternion"},
 inline constexpr NameTable<bool, 2> kBrakingDistanceNames{
     {{{true, "along_velocity"}, {false, "norm"}}}};
 
+/// `[guidance] profile`: where the defaults of the keys a file leaves out come from
+/// (docs/waypoint.md, "Tuning").
+enum class GuidanceProfile {
+  craft,  ///< derived from the spacecraft (guidance/craft_defaults.hpp); the default
+  paper,  ///< the waypoint paper's settings (Algorithm 1 as printed, Tables I-II)
+};
+inline constexpr NameTable<GuidanceProfile, 2> kGuidanceProfileNames{
+    {{{GuidanceProfile::craft, "craft"}, {GuidanceProfile::paper, "paper"}}}};
+
 /// Everything a `waypoint` run needs, validated.
 struct WaypointScenario {
   std::string name;
+  GuidanceProfile profile{GuidanceProfile::craft};  ///< [guidance] profile
   lie::Mat3 J{lie::Mat3::Identity() * 20.0};  ///< [spacecraft] inertia [kg·m²]
   double max_wheel_torque{0.0};               ///< [spacecraft] per-axis limit; 0 = none [N·m]
   lie::Vec3 main_thrust_axis_b{lie::Vec3::UnitX()};  ///< [spacecraft] actual engine axis (unit)

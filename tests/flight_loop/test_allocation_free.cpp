@@ -134,10 +134,21 @@ TEST(AllocationFree, CountingSeesAnAllocationInsideTheWindow) {
 
 TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
   // PET-ERG paper, Sec. V (examples/pet_erg_paper.toml), in mode pet and in mode continuous.
-  for (const governor::GovernorMode mode :
-       {governor::GovernorMode::pet, governor::GovernorMode::continuous}) {
+  // bounded_step: the reference move of the pet_erg flight loop (docs/pet-erg.md, section 10),
+  // with κ = 100 so that the move is bounded and halved on most steps.
+  struct Case {
+    governor::GovernorMode mode;
+    bool bounded_step;
+    double kappa;
+  };
+  for (const Case c : {Case{governor::GovernorMode::pet, false, 1.0},
+                       Case{governor::GovernorMode::continuous, false, 1.0},
+                       Case{governor::GovernorMode::pet, true, 100.0}}) {
+    const governor::GovernorMode mode = c.mode;
     governor::GovernorParams params;
     params.mode = mode;
+    params.bounded_step = c.bounded_step;
+    params.kappa = c.kappa;
     params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
     params.tau_max = 2.5;
     const std::array cones{governor::keep_in_cone(Vec3::UnitZ(), Vec3(-0.791, 0.061, -0.609),
@@ -158,7 +169,8 @@ TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
     }
     EXPECT_EQ(g_allocations.load(), 0)
         << "heap allocations in " << kCalls << " calls of AttitudeGovernor::step (mode "
-        << (mode == governor::GovernorMode::pet ? "pet" : "continuous") << ")";
+        << (mode == governor::GovernorMode::pet ? "pet" : "continuous")
+        << (c.bounded_step ? ", bounded step" : "") << ")";
     EXPECT_LT(lie::distance(R_ib, R_d), 1e-2);  // the loop really flew the manoeuvre
     if (mode == governor::GovernorMode::pet) {
       EXPECT_GE(samples, 90);  // 50 s at T_s = 0.5 s: the trigger (5) was evaluated

@@ -27,6 +27,8 @@ struct Campaign {
   /// Summary figures recorded per run (numeric and boolean top-level keys of the nominal run's
   /// summary, sorted, without wall_time_s and output_rows).
   std::vector<std::string> figures;
+  /// The nominal summary has a string `outcome` (docs/campaigns.md): runs.csv gets its column.
+  bool outcome_column{false};
 };
 
 /// Outcome of one run.

@@ -2,6 +2,7 @@
 
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -11,6 +12,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -48,8 +50,11 @@ void check_desired(const TableReader& t, std::string_view key, const Mat3& R_d,
   }
 }
 
+/// [desired]: a constant R_d, or a schedule whose R_d is the initial attitude R0_ib before the
+/// first entry's t (docs/scenario-format.md, "pet_erg").
 governor::ReferenceSchedule parse_desired(const TableReader& t,
-                                          std::span<const ConeConstraint> cones) {
+                                          std::span<const ConeConstraint> cones,
+                                          const Mat3& R0_ib) {
   declare(t, {"attitude", "schedule", "interpolation"});
   const bool has_attitude = t.has("attitude");
   const bool has_schedule = t.has("schedule");
@@ -80,7 +85,21 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
     check_desired(e, "attitude", w.R_d, cones);
     waypoints.push_back(w);
   }
-  return governor::ReferenceSchedule(waypoints, interp);
+  return governor::ReferenceSchedule(waypoints, interp, R0_ib);
+}
+
+/// Γ_d must be computable: gains and torque limit whose Γ_d over/underflows are refused at
+/// control.tau_max (docs/pet-erg.md, "Torque threshold Γ_d", range check).
+void check_torque_threshold(const TableReader& control, const governor::GovernorParams& params) {
+  const double lambda_min =
+      Eigen::SelfAdjointEigenSolver<Mat3>(params.J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+  if (!(lambda_min > 0.0)) return;  // the inertia reader has refused it already
+  try {
+    (void)governor::compute_torque_threshold(
+        {params.gains.kp, params.gains.kd, lambda_min, params.tau_max});
+  } catch (const SetupError& e) {
+    control.fail("tau_max", e.what());
+  }
 }
 
 }  // namespace
@@ -91,16 +110,15 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
                  "control", "erg", "cones", "simulation"});
   sc.name = read_header(root, doc, "pet_erg");
-  (void)parse_governor_block(root, sc.params);
+  const TableReader control = parse_governor_block(root, sc.params, {"control_period"});
+  sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
 
   const TableReader body = root.table("body");
   declare(body, {"inertia"});
   sc.params.J = body.inertia("inertia");
+  check_torque_threshold(control, sc.params);
 
   sc.cones = parse_cones(root);
-
-  const TableReader desired = root.table("desired");
-  sc.desired = parse_desired(desired, sc.cones);
 
   std::optional<TableReader> initial = root.optional_table("initial");
   if (initial) {
@@ -116,6 +134,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     sc.R_g0 = sc.R0_ib;
   }
 
+  const TableReader desired = root.table("desired");
+  sc.desired = parse_desired(desired, sc.cones, sc.R0_ib);
+
   const TableReader simulation = root.table("simulation");
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
                        "max_step", "convergence_tolerance"});
@@ -129,6 +150,11 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   require_step_budget(simulation, sc.integrator, sc.duration);
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
+  if (sc.control_period > 0.0) {
+    require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
+    require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
+                      "control steps");
+  }
   if (const std::optional<TableReader> erg = root.optional_table("erg");
       erg && sc.params.mode == GovernorMode::pet) {
     require_countable(*erg, "sampling_period", sc.params.Ts, sc.duration, kMaxRunSteps,

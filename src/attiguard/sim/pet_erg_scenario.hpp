@@ -25,6 +25,10 @@ struct PetErgScenario {
   lie::Vec3 omega0_b{lie::Vec3::Zero()};      ///< [initial] omega_b [rad/s]
   lie::Mat3 R_g0{lie::Mat3::Identity()};      ///< [initial] reference (default: attitude)
   governor::ReferenceSchedule desired;        ///< [desired] attitude or schedule
+  /// [control] control_period [s]: 0 integrates the continuous-time loop of the paper; > 0 runs
+  /// AttitudeGovernor::step every control_period with the torque held (docs/pet-erg.md, "Flight
+  /// loop").
+  double control_period{0.0};
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)

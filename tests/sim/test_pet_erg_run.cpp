@@ -360,6 +360,95 @@ TEST(PetErgFlightLoop, KappaHundredAtTenHertzMovesTheReferenceWithoutChattering)
   EXPECT_EQ(gov.reference(), sc.R0_ib);  // never moved: the issue's symptom, kept as the default
 }
 
+// ---- Imperfections of the flight loop (issue 14, deliverable 2; docs/pet-erg.md, section 11) ----
+
+const std::string kImperfections = R"(
+[imperfections]
+disturbance = "random"
+disturbance_bound = 0.02
+attitude_bias = [0.001, -0.002, 0.001]
+attitude_noise = 0.001
+rate_bias = [0.0005, 0.0, -0.0005]
+rate_noise = 0.001
+delay_periods = 1
+torque_quantum = 0.01
+seed = 7
+)";
+
+sim::PetErgScenario paper_with(const std::string& extra, double control_period = 0.1) {
+  std::string text = example_text("pet_erg_paper.toml");
+  const std::string limit = "tau_max = 2.5";
+  text.replace(text.find(limit), limit.size(),
+               limit + "\ncontrol_period = " + std::to_string(control_period));
+  return scenario::parse_pet_erg(scenario::parse_document(text + extra, "pet_erg_paper.toml"));
+}
+
+TEST(PetErgImperfections, AllTogetherAtTenHertzKeepTheConstraintsOfThePaperScenario) {
+  const sim::PetErgScenario sc = paper_with(kImperfections);
+  EXPECT_EQ(sc.imperfections.disturbance.kind, dynamics::DisturbanceKind::random);
+  EXPECT_EQ(sc.imperfections.delay_periods, 1);
+  const PetErgResult r = simulate_pet_erg(sc);
+  const nlohmann::json s = pet_erg_summary(sc, r);
+  EXPECT_LE(r.max_torque_norm, sc.params.tau_max);
+  EXPECT_GE(r.min_pointing_margin, 0.0);
+  EXPECT_EQ(s["imperfections"]["disturbance"], "random");
+  EXPECT_NEAR(s["imperfections"]["attitude_error_bound"].get<double>(),
+              std::sqrt(6e-6) + 0.001, 1e-15);
+  // The imperfections change the run (the nominal 10 Hz loop converges at 36.31 s).
+  EXPECT_NE(r.convergence_time, simulate_pet_erg(paper_at(0.1)).convergence_time);
+}
+
+TEST(PetErgImperfections, DelayAppliesEachTorqueOnePeriodLateAndQuantisationRoundsIt) {
+  auto torques = [](const sim::PetErgScenario& sc) {
+    std::vector<std::pair<double, Vec3>> rows;
+    (void)simulate_pet_erg(sc, [&](double t, const PetErgState&, const Mat3&,
+                                   const governor::GovernorOutput& out) {
+      rows.emplace_back(t, out.tau_b);
+    });
+    return rows;
+  };
+  const auto prompt = torques(paper_with("\n[imperfections]\ntorque_quantum = 0.01\n"));
+  const auto late = torques(paper_with("\n[imperfections]\ntorque_quantum = 0.01\ndelay_periods = 1\n"));
+  ASSERT_EQ(prompt.size(), late.size());
+  // Output every 0.01 s: rows 0..9 are [0, 0.1), rows 10..19 are [0.1, 0.2).
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(late[static_cast<std::size_t>(i)].second, Vec3::Zero()) << i;
+  EXPECT_NE(prompt[0].second, Vec3::Zero());
+  EXPECT_EQ(late[10].second, prompt[0].second);  // τ computed at t = 0 applied from t = 0.1
+  for (const auto& [t, tau] : prompt) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(tau(c) / 0.01, std::round(tau(c) / 0.01), 1e-9) << t;
+    }
+  }
+}
+
+TEST(PetErgImperfections, AConstantDisturbanceLeavesASteadyAttitudeError) {
+  const sim::PetErgScenario sc = paper_with(
+      "\n[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.2\n"
+      "disturbance_axis_b = [0.0, 0.0, 1.0]\n");
+  const PetErgResult r = simulate_pet_erg(sc);
+  // At rest k_p sk(R_e)^∨ balances d: sin θ = d̄/k_p = 0.04, φ = 1 − cos θ ≈ 8.0e-4.
+  // (10 %: at 60 s the slowest mode has not quite settled.)
+  EXPECT_NEAR(r.final_attitude_error, 1.0 - std::sqrt(1.0 - 0.04 * 0.04), 8e-5);
+  EXPECT_EQ(r.outcome, PetErgOutcome::not_converged_by_end);
+  EXPECT_NE(pet_erg_summary(sc, r)["outcome_reason"].get<std::string>().find("has not settled"),
+            std::string::npos);
+}
+
+TEST(PetErgImperfections, RefusedWithoutTheFlightLoopOrWithoutABound) {
+  std::string text = example_text("pet_erg_paper.toml") + "\n[imperfections]\nrate_noise = 0.01\n";
+  std::string msg = input_error(scenario::parse_document(text, "pet_erg_paper.toml"));
+  EXPECT_NE(msg.find("imperfections: imperfections act on the flight loop"), std::string::npos) << msg;
+  try {
+    (void)paper_with("\n[imperfections]\ndisturbance = \"sinusoidal\"\n");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("imperfections.disturbance: a disturbance needs "
+                                         "disturbance_bound > 0"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PetErgScenario, RejectsAnInadmissibleInitialState) {
   const std::string msg =
       input_error(paper_doc("omega_b = [0.2, 0.3, 0.4]", "omega_b = [0.2, 0.3, 0.6]"));

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <numbers>
 #include <optional>
@@ -102,13 +103,50 @@ void check_torque_threshold(const TableReader& control, const governor::Governor
   }
 }
 
+/// [imperfections] (docs/pet-erg.md, section 11; docs/scenario-format.md, "pet_erg"): only for
+/// the flight loop (control_period > 0).
+sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
+  declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
+              "attitude_bias", "attitude_noise", "rate_bias", "rate_noise", "delay_periods",
+              "torque_quantum", "seed"});
+  if (!(control_period > 0.0)) {
+    t.fail_here("imperfections act on the flight loop: set [control] control_period > 0");
+  }
+  sim::PetErgImperfections im;
+  const auto seed = static_cast<std::uint64_t>(t.integer_or("seed", 0, 0, 1L << 62));
+  dynamics::DisturbanceTorque& d = im.disturbance;
+  d.kind = enum_or(t, "disturbance", dynamics::kDisturbanceKindNames, dynamics::DisturbanceKind::none);
+  d.bound = t.number_or("disturbance_bound", 0.0, NumberRule::non_negative());
+  if (d.kind != dynamics::DisturbanceKind::none && !(d.bound > 0.0)) {
+    t.fail(t.has("disturbance_bound") ? "disturbance_bound" : "disturbance",
+           "a disturbance needs disturbance_bound > 0 [N m]");
+  }
+  if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
+  d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
+  d.hold = control_period;
+  d.seed = seed;
+  dynamics::AttitudeSensor& s = im.sensor;
+  if (t.has("attitude_bias")) s.attitude_bias_b = t.vector3("attitude_bias");
+  s.attitude_noise = t.number_or("attitude_noise", 0.0, NumberRule::non_negative());
+  if (t.has("rate_bias")) s.rate_bias_b = t.vector3("rate_bias");
+  s.rate_noise = t.number_or("rate_noise", 0.0, NumberRule::non_negative());
+  s.seed = seed;
+  if (s.attitude_error_bound() >= 0.5 * std::numbers::pi) {
+    t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
+           "attitude bias + noise must stay below pi/2 rad, got " + num(s.attitude_error_bound()));
+  }
+  im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
+  im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
+  return im;
+}
+
 }  // namespace
 
 sim::PetErgScenario parse_pet_erg(const Document& doc) {
   sim::PetErgScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation"});
+                 "control", "erg", "cones", "simulation", "imperfections"});
   sc.name = read_header(root, doc, "pet_erg");
   const TableReader control = parse_governor_block(root, sc.params, {"control_period"});
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
@@ -150,6 +188,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   require_step_budget(simulation, sc.integrator, sc.duration);
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
+  if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
+    sc.imperfections = parse_imperfections(*im, sc.control_period);
+  }
   if (sc.control_period > 0.0) {
     require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,

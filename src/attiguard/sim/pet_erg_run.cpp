@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
 
+#include "attiguard/control/torque_quantizer.hpp"
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/integrate/integrator.hpp"
@@ -250,13 +252,17 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
   y.R[0] = sc.R0_ib;
   y.R[1] = sc.R_g0;
   y.x = sc.omega0_b;
-  Vec3 tau_held = Vec3::Zero();
+  const PetErgImperfections& im = sc.imperfections;
+  Vec3 tau_held = Vec3::Zero();     // applied on [t_k, t_{k+1})
+  Vec3 tau_pending = Vec3::Zero();  // computed at t_k, applied from t_{k+1} (delay_periods = 1)
+  std::uint64_t k_control = 0;
 
-  auto field = [&](double, const PetErgState& s) -> PetErgState::Tangent {
+  auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3).setZero();  // R_g changes only at the control instants
-    d.segment<3>(6) = body.angular_acceleration(s.x, tau_held);  // eq. (1), torque held
+    // eq. (1) with the held torque and the disturbance d(t) (docs/pet-erg.md, section 11)
+    d.segment<3>(6) = body.angular_acceleration(s.x, tau_held + im.disturbance.at(t));
     return d;
   };
   // The governor's view of the current state with the torque actually applied.
@@ -272,8 +278,17 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
     return out;
   };
   auto control = [&](double t, PetErgState& s) {
-    const GovernorOutput& out = gov.step(t, s.R[0], s.x, sc.desired.at(t));
-    tau_held = out.tau_b;
+    // What the flight software sees (sensor errors), computes, and commands (quantised,
+    // possibly one period late): docs/pet-erg.md, section 11.
+    const dynamics::Measurement m = im.sensor.measure(s.R[0], s.x, k_control++);
+    const GovernorOutput& out = gov.step(t, m.R_ib, m.omega_b, sc.desired.at(t));
+    const Vec3 command = control::quantize_torque(out.tau_b, im.torque_quantum);
+    if (im.delay_periods == 1) {
+      tau_held = tau_pending;
+      tau_pending = command;
+    } else {
+      tau_held = command;
+    }
     s.R[1] = params.mode == GovernorMode::none ? sc.desired.at(t) : gov.reference();
     if (out.sampled) {
       ++r.samples;
@@ -325,6 +340,16 @@ nlohmann::json finite_or_null(double x) {
 
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1), v(2)}); }
 
+/// The [imperfections] of the run, echoed in summary.json (docs/pet-erg.md, section 11).
+nlohmann::json imperfections_json(const PetErgImperfections& im) {
+  return {{"disturbance", std::string(dynamics::kDisturbanceKindNames.name(im.disturbance.kind))},
+          {"disturbance_bound", im.disturbance.bound},
+          {"attitude_error_bound", im.sensor.attitude_error_bound()},
+          {"rate_error_bound", im.sensor.rate_error_bound()},
+          {"delay_periods", im.delay_periods},
+          {"torque_quantum", im.torque_quantum}};
+}
+
 std::string fmt(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", x);
@@ -355,6 +380,11 @@ std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
              fmt(r.reference_motion.largest_move() * 180.0 / std::numbers::pi) +
              " deg); reduce kappa or the integrator step, or set control_period; " + error;
     case PetErgOutcome::not_converged_by_end:
+      if (r.reference_distance_left <= std::acos(std::max(-1.0, 1.0 - sc.convergence_tolerance))) {
+        return "reference at R_d (" + fmt(left_deg) +
+               " deg left) but the attitude has not settled within the tolerance (slow damping, "
+               "a disturbance or a sensor bias); " + error;
+      }
       return "still " + fmt(left_deg) + " deg between reference and R_d (" + active + "); " + error;
     case PetErgOutcome::converged:
       break;
@@ -372,6 +402,7 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["integrator"] = std::string(integrate::kMethodNames.name(sc.integrator.method));
   j["duration"] = sc.duration;
   j["control_period"] = sc.control_period;
+  j["imperfections"] = imperfections_json(sc.imperfections);
   j["kp"] = sc.params.gains.kp;
   j["kd"] = sc.params.gains.kd;
   j["tau_max"] = sc.params.tau_max;

@@ -8,12 +8,22 @@
 #include <string>
 #include <vector>
 
+#include "attiguard/dynamics/attitude_sensor.hpp"
+#include "attiguard/dynamics/disturbance_torque.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/lie/so3.hpp"
 
 namespace attiguard::sim {
+
+/// The imperfections of the flight loop, `[imperfections]` (docs/pet-erg.md, section 11).
+struct PetErgImperfections {
+  dynamics::DisturbanceTorque disturbance;  ///< d(t) on the plant, ‖d‖ ≤ d̄
+  dynamics::AttitudeSensor sensor;          ///< biases and bounded noises of R and ω
+  int delay_periods{0};                     ///< 0 or 1: τ_k applied from t_{k+1} on
+  double torque_quantum{0.0};               ///< q [N·m] of control::quantize_torque (0: none)
+};
 
 /// Everything a `pet_erg` run needs, validated (scenario::parse_pet_erg also checks the
 /// admissibility of the initial state, PET-ERG paper Theorem 1).
@@ -29,6 +39,7 @@ struct PetErgScenario {
   /// AttitudeGovernor::step every control_period with the torque held (docs/pet-erg.md, "Flight
   /// loop").
   double control_period{0.0};
+  PetErgImperfections imperfections;          ///< [imperfections] (flight loop only)
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)

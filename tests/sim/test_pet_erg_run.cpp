@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/lie/so3.hpp"
@@ -447,6 +448,65 @@ TEST(PetErgImperfections, RefusedWithoutTheFlightLoopOrWithoutABound) {
               std::string::npos)
         << e.what();
   }
+}
+
+// ---- Reaction-wheel arrays (issue 14, deliverable 3; docs/pet-erg.md, section 12) ----
+
+std::string pyramid_text(double torque_max, double momentum_max) {
+  std::string w;
+  const double el = 35.26 * std::numbers::pi / 180.0;
+  for (int i = 0; i < 4; ++i) {
+    const double az = (0.25 + 0.5 * i) * std::numbers::pi;
+    w += "\n[[wheels]]\naxis_b = [" + std::to_string(std::cos(el) * std::cos(az)) + ", " +
+         std::to_string(std::cos(el) * std::sin(az)) + ", " + std::to_string(std::sin(el)) +
+         "]\ntorque_max = " + std::to_string(torque_max) +
+         "\nmomentum_max = " + std::to_string(momentum_max) + "\n";
+  }
+  return w;
+}
+
+TEST(PetErgWheels, PyramidAtTenHertzKeepsEveryWheelWithinItsLimitsAndConservesMomentum) {
+  const sim::PetErgScenario sc = paper_with(pyramid_text(1.5, 2.0));
+  ASSERT_EQ(sc.wheels.size(), 4u);
+  EXPECT_GT(sc.params.polytope_gamma_d, 0.0);
+  Mat3 R_end = Mat3::Identity();
+  Vec3 omega_end = Vec3::Zero();
+  const PetErgResult r = simulate_pet_erg(sc, [&](double t, const PetErgState& y, const Mat3&,
+                                                  const governor::GovernorOutput&) {
+    if (t == sc.duration) {
+      R_end = y.R[0];
+      omega_end = y.x;
+    }
+  });
+  const nlohmann::json s = pet_erg_summary(sc, r);
+  EXPECT_EQ(s["outcome"], "converged");
+  EXPECT_LE(r.max_wheel_torque_ratio, 1.0);
+  EXPECT_GT(r.max_wheel_torque_ratio, 0.3);  // the wheels did work
+  EXPECT_TRUE(s["wheel_torque_limit_satisfied"].get<bool>());
+  EXPECT_TRUE(s["wheel_momentum_satisfied"].get<bool>());
+  EXPECT_GE(r.min_pointing_margin, 0.0);
+  EXPECT_EQ(r.gamma_d, sc.params.polytope_gamma_d);  // the polytope binds, not τ_max = 2.5
+  // Without external torque the inertial angular momentum R (Jω + A h) is conserved.
+  const dynamics::ReactionWheelArray array(sc.wheels);
+  dynamics::WheelVector h{};
+  for (int i = 0; i < 4; ++i) h[static_cast<std::size_t>(i)] = r.final_wheel_momentum[static_cast<std::size_t>(i)];
+  const Vec3 H0 = sc.R0_ib * (sc.params.J * sc.omega0_b);
+  const Vec3 H1 = R_end * (sc.params.J * omega_end + array.body_momentum(h));
+  EXPECT_LT((H1 - H0).norm(), 1e-6 * H0.norm()) << H0.transpose() << " vs " << H1.transpose();
+}
+
+TEST(PetErgWheels, MomentumBeyondItsLimitIsReportedAsAViolation) {
+  const sim::PetErgScenario sc = paper_with(pyramid_text(1.5, 0.3));
+  const nlohmann::json s = pet_erg_summary(sc, simulate_pet_erg(sc));
+  EXPECT_GT(s["max_wheel_momentum_ratio"].get<double>(), 1.0);
+  EXPECT_FALSE(s["wheel_momentum_satisfied"].get<bool>());
+  EXPECT_FALSE(s["constraints_satisfied"].get<bool>());
+}
+
+TEST(PetErgWheels, WheelsNeedTheFlightLoop) {
+  const std::string text = example_text("pet_erg_paper.toml") + pyramid_text(1.5, 2.0);
+  const std::string msg = input_error(scenario::parse_document(text, "pet_erg_paper.toml"));
+  EXPECT_NE(msg.find("reaction wheels act in the flight loop"), std::string::npos) << msg;
 }
 
 TEST(PetErgScenario, RejectsAnInadmissibleInitialState) {

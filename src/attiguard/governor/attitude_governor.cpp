@@ -64,6 +64,11 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
   const TorqueThresholdInputs in{params.gains.kp, params.gains.kd, lambda_min, params.tau_max};
   threshold_ = compute_torque_threshold(in);
   gamma_d_ = threshold_.gamma_d;
+  require(std::isfinite(params.polytope_gamma_d) && params.polytope_gamma_d >= 0.0,
+          "polytope_gamma_d must be finite and non-negative");
+  if (params.polytope_gamma_d > 0.0) {
+    gamma_d_ = std::min(gamma_d_, params.polytope_gamma_d);
+  }
   gamma_d_loose_ = torque_threshold_loose(in);
   gamma_cap_ = params.gains.kp * (2.0 - params.epsilon_gamma);
   out_.gamma_d = gamma_d_;

@@ -52,6 +52,10 @@ struct GovernorParams {
   /// until V ≤ Γ holds at its end instead of being dropped (docs/pet-erg.md, "Discrete reference
   /// update"). false keeps the plain zero-order hold with rejection.
   bool bounded_step{false};
+  /// A second torque constraint, a polytope {|r_iᵀτ| ≤ u_i} (e.g. a reaction-wheel array,
+  /// docs/pet-erg.md, section 12): when set, Γ_d is min{Γ_d(‖τ‖ ≤ τ_max), Γ_d(polytope)}, its
+  /// value computed offline by compute_polytope_torque_threshold. 0: no polytope.
+  double polytope_gamma_d{0.0};
 };
 
 /// Everything the governor knows at one instant (PET-ERG paper notation).

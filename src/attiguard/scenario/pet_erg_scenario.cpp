@@ -13,6 +13,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/governor/polytope_torque_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
@@ -140,13 +141,49 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   return im;
 }
 
+/// [[wheels]] (docs/pet-erg.md, section 12): the array, and its polytope's Γ_d into params.
+void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
+  if (!root.has("wheels")) return;
+  const std::vector<TableReader> entries = root.array_of_tables("wheels");
+  for (const TableReader& e : entries) {
+    declare(e, {"axis_b", "torque_max", "momentum_max", "momentum"});
+    dynamics::ReactionWheel w;
+    w.axis_b = e.direction("axis_b");
+    w.torque_max = e.number("torque_max", NumberRule::positive());
+    w.momentum_max = e.number("momentum_max", NumberRule::positive());
+    w.momentum0 = e.number_or("momentum", 0.0, NumberRule{});
+    if (std::abs(w.momentum0) > w.momentum_max) {
+      e.fail("momentum", "initial wheel momentum exceeds momentum_max = " + num(w.momentum_max));
+    }
+    sc.wheels.push_back(w);
+  }
+  if (!(sc.control_period > 0.0)) {
+    entries.front().fail_here("reaction wheels act in the flight loop: set [control] control_period > 0");
+  }
+  try {
+    const dynamics::ReactionWheelArray array(sc.wheels);
+    std::vector<Vec3> rows;
+    std::vector<double> limits;
+    for (int i = 0; i < array.count(); ++i) {
+      rows.push_back(array.allocation_row(i));
+      limits.push_back(array.wheel(i).torque_max);
+    }
+    const governor::TorqueThreshold t = governor::compute_polytope_torque_threshold(
+        sc.params.gains.kp, sc.params.gains.kd, sc.params.J, rows, limits, &sc.wheel_binding);
+    sc.params.polytope_gamma_d = t.gamma_d;
+    sc.wheel_gamma_d_upper = t.upper_bound;
+  } catch (const SetupError& e) {
+    entries.front().fail_here(e.what());
+  }
+}
+
 }  // namespace
 
 sim::PetErgScenario parse_pet_erg(const Document& doc) {
   sim::PetErgScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation", "imperfections"});
+                 "control", "erg", "cones", "simulation", "imperfections", "wheels"});
   sc.name = read_header(root, doc, "pet_erg");
   const TableReader control = parse_governor_block(root, sc.params, {"control_period"});
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
@@ -191,6 +228,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
     sc.imperfections = parse_imperfections(*im, sc.control_period);
   }
+  parse_wheels(root, sc);
   if (sc.control_period > 0.0) {
     require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,

@@ -256,13 +256,33 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
   Vec3 tau_held = Vec3::Zero();     // applied on [t_k, t_{k+1})
   Vec3 tau_pending = Vec3::Zero();  // computed at t_k, applied from t_{k+1} (delay_periods = 1)
   std::uint64_t k_control = 0;
+  // Reaction wheels (docs/pet-erg.md, section 12): wheel torques held like the body torque, the
+  // momenta linear in t between control instants, h(t) = h_k − u (t − t_k).
+  const bool wheels = !sc.wheels.empty();
+  const dynamics::ReactionWheelArray array =
+      wheels ? dynamics::ReactionWheelArray(sc.wheels) : dynamics::ReactionWheelArray();
+  dynamics::WheelVector u_held{};
+  dynamics::WheelVector u_pending{};
+  dynamics::WheelVector h_k{};
+  double t_k = 0.0;
+  for (int i = 0; i < array.count(); ++i) h_k[static_cast<std::size_t>(i)] = array.wheel(i).momentum0;
+  auto momenta = [&](double t) {
+    dynamics::WheelVector h = h_k;
+    for (int i = 0; i < array.count(); ++i) {
+      h[static_cast<std::size_t>(i)] -= u_held[static_cast<std::size_t>(i)] * (t - t_k);
+    }
+    return h;
+  };
 
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3).setZero();  // R_g changes only at the control instants
-    // eq. (1) with the held torque and the disturbance d(t) (docs/pet-erg.md, section 11)
-    d.segment<3>(6) = body.angular_acceleration(s.x, tau_held + im.disturbance.at(t));
+    // eq. (1) with the held torque and the disturbance d(t) (docs/pet-erg.md, section 11) and
+    // the wheels' gyroscopic torque (A h) × ω (section 12)
+    Vec3 tau = tau_held + im.disturbance.at(t);
+    if (wheels) tau += array.body_momentum(momenta(t)).cross(s.x);
+    d.segment<3>(6) = body.angular_acceleration(s.x, tau);
     return d;
   };
   // The governor's view of the current state with the torque actually applied.
@@ -275,6 +295,13 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
     const Mat3 R_d = sc.desired.at(t);
     const GovernorOutput out = view(s, R_d);
     record(sc, r, t, R_d, s.R[0], out);
+    if (wheels) {
+      const dynamics::WheelVector h = momenta(t);
+      for (int i = 0; i < array.count(); ++i) {
+        r.max_wheel_momentum_ratio = std::max(
+            r.max_wheel_momentum_ratio, std::abs(h[static_cast<std::size_t>(i)]) / array.wheel(i).momentum_max);
+      }
+    }
     return out;
   };
   auto control = [&](double t, PetErgState& s) {
@@ -283,7 +310,20 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
     const dynamics::Measurement m = im.sensor.measure(s.R[0], s.x, k_control++);
     const GovernorOutput& out = gov.step(t, m.R_ib, m.omega_b, sc.desired.at(t));
     const Vec3 command = control::quantize_torque(out.tau_b, im.torque_quantum);
-    if (im.delay_periods == 1) {
+    if (wheels) {
+      h_k = momenta(t);
+      t_k = t;
+      // u = A⁺τ (minimum norm), clipped to the wheels' limits; the demand ratio is reported.
+      for (int i = 0; i < array.count(); ++i) {
+        r.max_wheel_torque_ratio = std::max(r.max_wheel_torque_ratio,
+                                            std::abs(array.allocation_row(i).dot(command)) /
+                                                array.wheel(i).torque_max);
+      }
+      const dynamics::WheelVector u = array.allocate(command);
+      u_held = im.delay_periods == 1 ? u_pending : u;
+      u_pending = u;
+      tau_held = array.body_torque(u_held);
+    } else if (im.delay_periods == 1) {
       tau_held = tau_pending;
       tau_pending = command;
     } else {
@@ -322,6 +362,11 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
   const integrate::IntegrationStats stats =
       integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
   finish(sc, y, stats, r);
+  if (wheels) {
+    const dynamics::WheelVector h = momenta(sc.duration);
+    r.final_wheel_momentum.assign(h.begin(), h.begin() + array.count());
+    r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
+  }
   return r;
 }
 
@@ -403,6 +448,16 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["duration"] = sc.duration;
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
+  if (!sc.wheels.empty()) {
+    j["wheels"] = static_cast<long>(sc.wheels.size());
+    j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
+    j["wheel_binding"] = sc.wheel_binding;
+    j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
+    j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
+    j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
+    j["wheel_momentum_satisfied"] = r.max_wheel_momentum_ratio <= 1.0;
+    j["final_wheel_momentum"] = r.final_wheel_momentum;
+  }
   j["kp"] = sc.params.gains.kp;
   j["kd"] = sc.params.gains.kd;
   j["tau_max"] = sc.params.tau_max;
@@ -432,7 +487,9 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["first_pointing_violation_time"] =
       r.first_pointing_violation_time >= 0.0 ? nlohmann::json(r.first_pointing_violation_time)
                                              : nlohmann::json(nullptr);
-  j["constraints_satisfied"] = torque_ok && pointing_ok;
+  const bool wheels_ok = sc.wheels.empty() || (r.max_wheel_torque_ratio <= 1.0 &&
+                                                r.max_wheel_momentum_ratio <= 1.0);
+  j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
   j["final_attitude_error"] = r.final_attitude_error;

@@ -52,6 +52,12 @@ struct PetErgResult {
   std::vector<int> active_cones;        ///< cones with c(R_g) < ζ at the end (repulsive band)
   double slew_angle{0.0};               ///< d(R_0, final R_d) [rad]
   double eigenaxis_bang_bang_time{0.0};  ///< of that slew at τ_max (dynamics/eigenaxis_slew.hpp)
+  /// Wheels (docs/pet-erg.md, section 12): max over the control instants of |(A⁺τ_cmd)_i| /
+  /// u_max,i (> 1: the allocation demanded more than a wheel gives, the command was clipped) …
+  double max_wheel_torque_ratio{0.0};
+  /// … and max over the steps of |h_i| / h_max,i; the momenta at the end [N·m·s].
+  double max_wheel_momentum_ratio{0.0};
+  std::vector<double> final_wheel_momentum;
   long samples{0};           ///< sampling instants at which (5) was evaluated (mode pet)
   long samples_updating{0};  ///< of which the condition held
   long steps{0};

@@ -10,6 +10,7 @@
 
 #include "attiguard/dynamics/attitude_sensor.hpp"
 #include "attiguard/dynamics/disturbance_torque.hpp"
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
@@ -40,6 +41,11 @@ struct PetErgScenario {
   /// loop").
   double control_period{0.0};
   PetErgImperfections imperfections;          ///< [imperfections] (flight loop only)
+  /// [[wheels]] (flight loop only; docs/pet-erg.md, section 12): empty = the body torque is
+  /// applied directly. With wheels, params.polytope_gamma_d is their polytope's Γ_d.
+  std::vector<dynamics::ReactionWheel> wheels;
+  double wheel_gamma_d_upper{0.0};  ///< attained value above the polytope's exact Γ_d
+  int wheel_binding{-1};            ///< the wheel whose limit binds the polytope's Γ_d
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)

@@ -5,7 +5,9 @@
 #include <numbers>
 #include <vector>
 
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/polytope_torque_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
@@ -82,6 +84,37 @@ void BM_GovernorFlightStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GovernorFlightStep);
+
+// One step of the pet_erg flight loop with a 4-wheel pyramid (docs/pet-erg.md, sections 10 and
+// 12): AttitudeGovernor::step with the bounded reference step and the polytope's Γ_d, then the
+// allocation u = A⁺τ to the wheels, as on board. (The robust margins of issue 14 are not
+// implemented: this is the nominal step.)
+void BM_WheelFlightStep(benchmark::State& state) {
+  GovernorParams p = paper_params();
+  p.bounded_step = true;
+  const auto wheels = attiguard::dynamics::pyramid_wheels(35.26 * std::numbers::pi / 180.0, 1.5, 2.0);
+  const attiguard::dynamics::ReactionWheelArray array(wheels);
+  std::vector<Vec3> rows;
+  std::vector<double> limits;
+  for (int i = 0; i < array.count(); ++i) {
+    rows.push_back(array.allocation_row(i));
+    limits.push_back(array.wheel(i).torque_max);
+  }
+  p.polytope_gamma_d =
+      attiguard::governor::compute_polytope_torque_threshold(p.gains.kp, p.gains.kd, p.J, rows, limits).gamma_d;
+  AttitudeGovernor gov(p, paper_cones());
+  gov.reset(0.0, Mat3::Identity());
+  const Mat3 R = attiguard::lie::exp(Vec3(0.1, 0.4, -0.2));
+  const Vec3 w(0.02, 0.03, 0.04);
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 0.1;
+    const auto& out = gov.step(t, R, w, kRd);
+    const auto u = array.allocate(out.tau_b);
+    benchmark::DoNotOptimize(u);
+  }
+}
+BENCHMARK(BM_WheelFlightStep);
 
 // Offline Γ_d to 1e-12 (once per governor construction).
 void BM_TorqueThresholdOffline(benchmark::State& state) {

@@ -46,6 +46,30 @@ TEST(CampaignCli, ThreadsGiveTheSerialBytes) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 14: a campaign whose runs mostly stall says so, and its convergence statistics state
+// the number of runs they are over.
+TEST(CampaignCli, CountsEachOutcomeAndStatesTheCountOfTheConvergenceStatistics) {
+  const auto dir = fresh_dir("campaign_outcomes");
+  const auto r = campaign("tests/data/campaign/pet_erg_stalling.toml", dir, "--runs 40 --seed 3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_file(dir / "campaign.json"));
+  ASSERT_TRUE(j.contains("outcomes")) << j.dump();
+  const long converged = j["outcomes"].value("converged", 0L);
+  const long stalled = j["outcomes"].value("stalled", 0L);
+  EXPECT_GT(converged, 0);
+  EXPECT_GT(stalled, converged);
+  EXPECT_EQ(converged + stalled, j["ok"].get<long>());
+  EXPECT_EQ(j["figures"]["convergence_time"]["count"].get<long>(), converged);
+  EXPECT_EQ(j["figures"]["min_pointing_margin"]["count"].get<long>(), j["ok"].get<long>());
+  EXPECT_NE(r.out.find("Outcomes of the 40 ok runs: " + std::to_string(converged) + " converged, " +
+                       std::to_string(stalled) + " stalled"),
+            std::string::npos)
+      << r.out;
+  const std::string header = read_file(dir / "runs.csv").substr(0, read_file(dir / "runs.csv").find('\n'));
+  EXPECT_NE(header.find(",outcome,violation,"), std::string::npos) << header;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
   const auto dir = fresh_dir("campaign_replay");
   ASSERT_EQ(campaign(kExample, dir, "--runs 8 --seed 5").exit_code, 0);

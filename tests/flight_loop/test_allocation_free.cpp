@@ -13,6 +13,7 @@
 
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
@@ -23,6 +24,10 @@
 #include <vector>
 
 #include "attiguard/control/quaternion_pid.hpp"
+#include "attiguard/control/torque_quantizer.hpp"
+#include "attiguard/dynamics/attitude_sensor.hpp"
+#include "attiguard/dynamics/disturbance_torque.hpp"
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/spacecraft_plant.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/guidance/mission.hpp"
@@ -134,10 +139,21 @@ TEST(AllocationFree, CountingSeesAnAllocationInsideTheWindow) {
 
 TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
   // PET-ERG paper, Sec. V (examples/pet_erg_paper.toml), in mode pet and in mode continuous.
-  for (const governor::GovernorMode mode :
-       {governor::GovernorMode::pet, governor::GovernorMode::continuous}) {
+  // bounded_step: the reference move of the pet_erg flight loop (docs/pet-erg.md, section 10),
+  // with κ = 100 so that the move is bounded and halved on most steps.
+  struct Case {
+    governor::GovernorMode mode;
+    bool bounded_step;
+    double kappa;
+  };
+  for (const Case c : {Case{governor::GovernorMode::pet, false, 1.0},
+                       Case{governor::GovernorMode::continuous, false, 1.0},
+                       Case{governor::GovernorMode::pet, true, 100.0}}) {
+    const governor::GovernorMode mode = c.mode;
     governor::GovernorParams params;
     params.mode = mode;
+    params.bounded_step = c.bounded_step;
+    params.kappa = c.kappa;
     params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
     params.tau_max = 2.5;
     const std::array cones{governor::keep_in_cone(Vec3::UnitZ(), Vec3(-0.791, 0.061, -0.609),
@@ -158,12 +174,60 @@ TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
     }
     EXPECT_EQ(g_allocations.load(), 0)
         << "heap allocations in " << kCalls << " calls of AttitudeGovernor::step (mode "
-        << (mode == governor::GovernorMode::pet ? "pet" : "continuous") << ")";
+        << (mode == governor::GovernorMode::pet ? "pet" : "continuous")
+        << (c.bounded_step ? ", bounded step" : "") << ")";
     EXPECT_LT(lie::distance(R_ib, R_d), 1e-2);  // the loop really flew the manoeuvre
     if (mode == governor::GovernorMode::pet) {
       EXPECT_GE(samples, 90);  // 50 s at T_s = 0.5 s: the trigger (5) was evaluated
     }
   }
+}
+
+// The pet_erg flight loop's on-board pieces besides the governor (docs/pet-erg.md, sections
+// 11-12): sensor model, quantiser, wheel allocation, disturbance; a 10 Hz loop of 4 wheels.
+static_assert(noexcept(std::declval<const dynamics::AttitudeSensor&>().measure(
+    std::declval<const Mat3&>(), std::declval<const Vec3&>(), 0)));
+static_assert(noexcept(control::quantize_torque(std::declval<const Vec3&>(), 0.0)));
+static_assert(noexcept(std::declval<const dynamics::ReactionWheelArray&>().allocate(
+    std::declval<const Vec3&>())));
+static_assert(noexcept(std::declval<const dynamics::DisturbanceTorque&>().at(0.0)));
+
+TEST(AllocationFree, WheelFlightLoopWithImperfections) {
+  governor::GovernorParams params;
+  params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
+  params.tau_max = 2.5;
+  params.bounded_step = true;
+  params.polytope_gamma_d = 0.36;
+  const std::array cones{governor::keep_in_cone(Vec3::UnitZ(), Vec3(-0.791, 0.061, -0.609),
+                                                160.0 * std::numbers::pi / 180.0)};
+  governor::AttitudeGovernor gov(params, cones);
+  const auto wheels = dynamics::pyramid_wheels(35.26 * std::numbers::pi / 180.0, 1.5, 2.0);
+  const dynamics::ReactionWheelArray array(wheels);
+  dynamics::AttitudeSensor sensor;
+  sensor.attitude_bias_b = Vec3(0.001, -0.002, 0.001);
+  sensor.attitude_noise = 0.001;
+  sensor.rate_noise = 0.001;
+  dynamics::DisturbanceTorque disturbance;
+  disturbance.kind = dynamics::DisturbanceKind::random;
+  disturbance.bound = 0.02;
+  disturbance.hold = 0.1;
+  const dynamics::RigidBody body(params.J);
+  const Mat3 R_d = lie::rotation_from_axis_angle({Vec3::UnitY(), std::numbers::pi / 2.0});
+  Mat3 R_ib = Mat3::Identity();
+  Vec3 omega_b(0.2, 0.3, 0.4);
+  const double dt = 0.1;
+  g_allocations = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Vec3 tau = counted([&] {
+      const dynamics::Measurement m = sensor.measure(R_ib, omega_b, static_cast<std::uint64_t>(k));
+      const governor::GovernorOutput& out = gov.step(k * dt, m.R_ib, m.omega_b, R_d);
+      const dynamics::WheelVector u = array.allocate(control::quantize_torque(out.tau_b, 0.01));
+      return Vec3(array.body_torque(u) + disturbance.at(k * dt));
+    });
+    propagate_attitude(body, tau, dt, R_ib, omega_b);
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in the wheel flight loop";
+  EXPECT_LT(lie::distance(R_ib, R_d), 0.05);  // the loop really flew the manoeuvre
 }
 
 TEST(AllocationFree, QuaternionPidStepTrackingATurn) {

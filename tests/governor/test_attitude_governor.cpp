@@ -109,6 +109,22 @@ TEST(ReferenceSchedule, HoldAndGeodesicInterpolation) {
                SetupError);
 }
 
+// Issue 14: the first waypoint's t is honoured: before it R_d is the attitude given as R_before
+// (the scenario's initial attitude), not the first waypoint.
+TEST(ReferenceSchedule, FirstWaypointTimeIsHonoured) {
+  const Mat3 R0 = lie::exp(Vec3(0.1, 0.2, -0.3));
+  const Mat3 A = lie::exp(Vec3(0.0, 1.0, 0.0));
+  const Mat3 B = lie::exp(Vec3(1.0, 0.0, 0.0));
+  const std::vector<Waypoint> w{{5.0, A}, {10.0, B}};
+  const ReferenceSchedule s(w, Interpolation::geodesic, R0);
+  EXPECT_LT(lie::distance(s.at(0.0), R0), 1e-15);
+  EXPECT_LT(lie::distance(s.at(4.999), R0), 1e-15);
+  EXPECT_LT(lie::distance(s.at(5.0), A), 1e-15);
+  EXPECT_LT(lie::distance(s.at(20.0), B), 1e-15);
+  // Without R_before the first waypoint's attitude holds before its time (library default).
+  EXPECT_LT(lie::distance(ReferenceSchedule(w, Interpolation::hold).at(0.0), A), 1e-15);
+}
+
 TEST(AttitudeGovernor, RejectsInvalidParameters) {
   GovernorParams p = paper_params();
   p.c_gamma = 1.0;

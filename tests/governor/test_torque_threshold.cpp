@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <tuple>
 
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/core/errors.hpp"
@@ -150,6 +151,29 @@ TEST(TorqueThreshold, RejectsInvalidInputs) {
   EXPECT_THROW((void)compute_torque_threshold({0.0, 1.0, 1.0, 1.0}), SetupError);
   EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, -1.0, 1.0}), SetupError);
   EXPECT_THROW((void)compute_torque_threshold({1.0, 1.0, 1.0, std::nan("")}), SetupError);
+}
+
+// Issue 14: τ_max ≥ 1e155 (τ_max² overflows) or k_p, k_d = 1e300 gave Γ_d = 0 and a run that
+// never moved but reported success; such inputs are refused. Large but representable values
+// still work.
+TEST(TorqueThreshold, RejectsParametersWhoseGammaDOverOrUnderflows) {
+  const TorqueThresholdInputs paper{5.0, 1.0, 1.0, 2.5};
+  for (const auto& [kp, kd, tau_max] : {std::tuple{5.0, 1.0, 1e155}, std::tuple{1e300, 1.0, 2.5},
+                                        std::tuple{5.0, 1e300, 2.5}, std::tuple{1e300, 1e300, 2.5},
+                                        std::tuple{5.0, 1.0, 1e-170}, std::tuple{5.0, 1e-170, 2.5}}) {
+    TorqueThresholdInputs in = paper;
+    in.kp = kp;
+    in.kd = kd;
+    in.tau_max = tau_max;
+    EXPECT_THROW((void)compute_torque_threshold(in), SetupError) << kp << " " << kd << " " << tau_max;
+  }
+  for (const double tau_max : {1e-3, 1e3, 1e6}) {
+    TorqueThresholdInputs in = paper;
+    in.tau_max = tau_max;
+    const TorqueThreshold t = compute_torque_threshold(in);
+    EXPECT_GT(t.gamma_d, 0.0);
+    EXPECT_LE(t.gamma_d, t.upper_bound);
+  }
 }
 
 }  // namespace

@@ -81,6 +81,8 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
   for (const auto& [key, value] : summary.items()) {
     if (is_figure(key, value)) c.figures.push_back(key);
   }
+  const auto outcome = summary.find("outcome");
+  c.outcome_column = outcome != summary.end() && outcome->is_string();
   return c;
 }
 
@@ -147,6 +149,7 @@ RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
 std::vector<std::string> csv_columns(const Campaign& c) {
   std::vector<std::string> cols{"run", "seed", "attempts", "status", "reason"};
   for (const std::string& s : scenario::dispersion_columns(c.plan)) cols.push_back(s);
+  if (c.outcome_column) cols.push_back("outcome");
   cols.push_back("violation");
   for (const std::string& s : c.figures) cols.push_back(s);
   return cols;
@@ -161,6 +164,11 @@ std::string csv_row(const Campaign& c, const RunRecord& r) {
   }
   for (double v : r.values) line.append(1, ',').append(format_number(v));
   const bool ok = r.status == RunStatus::ok;
+  if (c.outcome_column) {
+    const auto it = ok ? r.summary.find("outcome") : r.summary.end();
+    line.append(1, ',');
+    if (ok && it != r.summary.end() && it->is_string()) line.append(csv_quote(it->get<std::string>()));
+  }
   line += ok ? (r.violation ? ",1" : ",0") : ",";
   for (const std::string& key : c.figures) {
     line += ",";

@@ -29,6 +29,8 @@ struct Campaign {
   std::vector<std::string> figures;
   /// t_k of the retained samples of the nominal run (plan.retain; docs/campaigns.md).
   std::vector<double> retain_times;
+  /// The nominal summary has a string `outcome` (docs/campaigns.md): runs.csv gets its column.
+  bool outcome_column{false};
 };
 
 /// Outcome of one run.

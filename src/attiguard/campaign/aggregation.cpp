@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <string>
 
 #include "attiguard/campaign/csv_format.hpp"
 
@@ -28,16 +30,19 @@ nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string
   const std::size_t status_col = col("status");
   const std::size_t reason_col = col("reason");
   const std::size_t violation_col = col("violation");
+  const std::size_t outcome_col = col("outcome");  // header.size() when the kind has none
   long ok = 0, rejected = 0, failed = 0, violations = 0;
   std::vector<std::vector<double>> values(header.size());
   nlohmann::json listed = nlohmann::json::array();
   nlohmann::json violating = nlohmann::json::array();
+  std::map<std::string, long> outcomes;
   for (const auto& [index, line] : rows) {
     const std::vector<std::string> f = csv_split(line);
     if (f.size() != header.size()) continue;
     const std::string& status = f[status_col];
     if (status == "ok") {
       ++ok;
+      if (outcome_col < header.size()) ++outcomes[f[outcome_col]];
       if (f[violation_col] == "1") {
         ++violations;
         if (violating.size() < kMaxListed) violating.push_back(index);
@@ -66,6 +71,11 @@ nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string
   j["failures"] = failed;
   j["violations"] = violations;
   j["violating_runs"] = violating;
+  if (outcome_col < header.size()) {
+    nlohmann::json counts = nlohmann::json::object();
+    for (const auto& [name, n] : outcomes) counts[name.empty() ? "unknown" : name] = n;
+    j["outcomes"] = counts;
+  }
   j["failed_or_rejected_runs"] = listed;
   nlohmann::json pct = nlohmann::json::object();
   for (std::size_t i = violation_col + 1; i < header.size(); ++i) {
@@ -74,7 +84,10 @@ nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string
     std::sort(v.begin(), v.end());
     double sum = 0.0;
     for (double x : v) sum += x;
-    pct[header[i]] = {{"min", v.front()},
+    // `count`: the runs the statistics are over (a figure that is null in a run, e.g. the
+    // convergence time of a run that did not converge, is left out of them).
+    pct[header[i]] = {{"count", static_cast<long>(v.size())},
+                      {"min", v.front()},
                       {"p1", percentile(v, 1)},
                       {"p5", percentile(v, 5)},
                       {"p50", percentile(v, 50)},
@@ -85,6 +98,15 @@ nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string
   }
   j["figures"] = pct;
   return j;
+}
+
+std::string outcome_counts_text(const nlohmann::json& outcomes) {
+  std::string text;
+  for (const auto& [name, n] : outcomes.items()) {
+    if (!text.empty()) text += ", ";
+    text += std::to_string(n.get<long>()) + " " + name;
+  }
+  return text.empty() ? "none" : text;
 }
 
 }  // namespace attiguard::campaign

@@ -1,7 +1,8 @@
 #pragma once
 /// @file aggregation.hpp
-/// campaign.json from the rows of runs.csv: counts, violations, failures and percentiles of
-/// every summary figure over the runs that completed (status ok).
+/// campaign.json from the rows of runs.csv: counts, violations, failures, the count of each
+/// `outcome` value (kinds whose summary has one), and percentiles of every summary figure over
+/// the runs that completed (status ok) and have it, with the count they are over.
 
 #include <map>
 #include <string>
@@ -29,5 +30,9 @@ struct CampaignInfo {
 [[nodiscard]] nlohmann::json aggregate(const CampaignInfo& info,
                                        const std::vector<std::string>& header,
                                        const std::map<long, std::string>& rows);
+
+/// "2 converged, 38 stalled" from campaign.json's `outcomes` object (name → count), in its
+/// (sorted) order; "none" when empty.
+[[nodiscard]] std::string outcome_counts_text(const nlohmann::json& outcomes);
 
 }  // namespace attiguard::campaign

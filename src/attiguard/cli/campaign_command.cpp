@@ -204,6 +204,10 @@ void campaign_command(const CampaignArguments& args) {
   std::cout << "Done in " << wall << " s: " << summary["ok"] << " ok, " << summary["rejected"]
             << " rejected, " << summary["failures"] << " failed, " << summary["violations"]
             << " with a constraint violation\n";
+  if (summary.contains("outcomes")) {
+    std::cout << "Outcomes of the " << summary["ok"] << " ok runs: "
+              << campaign::outcome_counts_text(summary["outcomes"]) << '\n';
+  }
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
             << (args.out_dir / "campaign.json").string() << '\n';
   if (retained) {

@@ -64,6 +64,11 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
   const TorqueThresholdInputs in{params.gains.kp, params.gains.kd, lambda_min, params.tau_max};
   threshold_ = compute_torque_threshold(in);
   gamma_d_ = threshold_.gamma_d;
+  require(std::isfinite(params.polytope_gamma_d) && params.polytope_gamma_d >= 0.0,
+          "polytope_gamma_d must be finite and non-negative");
+  if (params.polytope_gamma_d > 0.0) {
+    gamma_d_ = std::min(gamma_d_, params.polytope_gamma_d);
+  }
   gamma_d_loose_ = torque_threshold_loose(in);
   gamma_cap_ = params.gains.kp * (2.0 - params.epsilon_gamma);
   out_.gamma_d = gamma_d_;
@@ -138,6 +143,23 @@ void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
   out_.gamma_d = gamma_d_;
 }
 
+Mat3 AttitudeGovernor::bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept {
+  Vec3 move = dt * out_.xi_g;
+  const double length = move.norm();
+  const double limit = out_.rho.norm();  // ρ_n of the previous call, the direction of ξ
+  if (length > limit) {
+    move *= limit / length;
+  }
+  for (int halving = 0; halving < kMaxMoveHalvings; ++halving) {
+    const Mat3 candidate = R_g_ * lie::exp(move);
+    if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
+      return candidate;
+    }
+    move *= 0.5;
+  }
+  return R_g_;
+}
+
 const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const Vec3& omega_b,
                                              const Mat3& R_d) noexcept {
   if (!started_) {
@@ -148,10 +170,14 @@ const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const V
   } else {
     const double dt = t - t_prev_;
     if (dt > 0.0 && out_.xi_g.squaredNorm() > 0.0) {
-      const Mat3 candidate = R_g_ * lie::exp(dt * out_.xi_g);
-      // Zero-order hold of the rate between calls; keep V ≤ Γ at the call instants.
-      if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
-        R_g_ = candidate;
+      if (params_.bounded_step) {
+        R_g_ = bounded_move(R_ib, omega_b, dt);
+      } else {
+        const Mat3 candidate = R_g_ * lie::exp(dt * out_.xi_g);
+        // Zero-order hold of the rate between calls; keep V ≤ Γ at the call instants.
+        if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
+          R_g_ = candidate;
+        }
       }
     }
   }

@@ -47,6 +47,15 @@ struct GovernorParams {
   double Ts{0.5};                    ///< sampling period T_s of (5)-(6) [s]
   double epsilon{1e-3};              ///< ε of the normalisation max{‖ρ_n‖, ε} in (4), (6)
   double epsilon_gamma{0.1};         ///< ε_Γ ∈ (0, 2) of Γ's cap k_p(2 − ε_Γ)
+  /// step() only: the reference move of one control step is at most ‖ρ_n‖ long (it cannot
+  /// overshoot the field's equilibrium however large κ(Γ − V) dt is) and is shortened by halving
+  /// until V ≤ Γ holds at its end instead of being dropped (docs/pet-erg.md, "Discrete reference
+  /// update"). false keeps the plain zero-order hold with rejection.
+  bool bounded_step{false};
+  /// A second torque constraint, a polytope {|r_iᵀτ| ≤ u_i} (e.g. a reaction-wheel array,
+  /// docs/pet-erg.md, section 12): when set, Γ_d is min{Γ_d(‖τ‖ ≤ τ_max), Γ_d(polytope)}, its
+  /// value computed offline by compute_polytope_torque_threshold. 0: no polytope.
+  double polytope_gamma_d{0.0};
 };
 
 /// Everything the governor knows at one instant (PET-ERG paper notation).
@@ -105,6 +114,8 @@ class AttitudeGovernor {
   /// previous call (zero-order hold, R_g ← R_g exp((t − t_prev) ξ̂), a move that would leave
   /// V > Γ is not taken), evaluates (5) when a sampling instant t_k has been reached, and
   /// returns τ (3) with all diagnostics. Calls reset(t, R_ib) first if reset was never called.
+  /// With params.bounded_step the move is bounded and shortened instead (docs/pet-erg.md,
+  /// "Discrete reference update").
   const GovernorOutput& step(double t, const Mat3& R_ib, const Vec3& omega_b,
                              const Mat3& R_d) noexcept;
 
@@ -130,6 +141,11 @@ class AttitudeGovernor {
   [[nodiscard]] double gamma_cap() const noexcept { return gamma_cap_; }
 
  private:
+  /// Halvings of a reference move tried before it is dropped (bounded_step; 2⁻³⁰ of a step).
+  static constexpr int kMaxMoveHalvings = 30;
+  /// The bounded move of R_g over dt (docs/pet-erg.md, "Discrete reference update").
+  [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept;
+
   GovernorParams params_;
   ConeSet cones_;
   TorqueThreshold threshold_;

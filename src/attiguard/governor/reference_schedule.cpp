@@ -10,6 +10,7 @@ namespace attiguard::governor {
 
 ReferenceSchedule::ReferenceSchedule(const Mat3& R_d) noexcept {
   waypoints_[0] = {0.0, R_d};
+  before_ = R_d;
   slew_[0].setZero();
 }
 
@@ -36,9 +37,22 @@ ReferenceSchedule::ReferenceSchedule(std::span<const Waypoint> waypoints,
     const auto k = static_cast<std::size_t>(i);
     slew_[k] = lie::log(waypoints_[k].R_d.transpose() * waypoints_[k + 1].R_d);
   }
+  before_ = waypoints_[0].R_d;
+}
+
+ReferenceSchedule::ReferenceSchedule(std::span<const Waypoint> waypoints,
+                                     Interpolation interpolation, const Mat3& R_before)
+    : ReferenceSchedule(waypoints, interpolation) {
+  if (!lie::is_rotation(R_before, 1e-6)) {
+    throw SetupError("reference schedule: the attitude before the first waypoint is not a rotation");
+  }
+  before_ = R_before;
 }
 
 Mat3 ReferenceSchedule::at(double t) const noexcept {
+  if (t < waypoints_[0].t) {
+    return before_;
+  }
   if (count_ == 1 || t <= waypoints_[0].t) {
     return waypoints_[0].R_d;
   }

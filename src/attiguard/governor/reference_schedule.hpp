@@ -35,7 +35,8 @@ struct Waypoint {
   Mat3 R_d{Mat3::Identity()};
 };
 
-/// R_d(t) of the PET-ERG paper (Sec. II): constant before the first waypoint and after the last.
+/// R_d(t) of the PET-ERG paper (Sec. II): R_before before the first waypoint's time (by default
+/// the first waypoint's attitude), constant after the last.
 class ReferenceSchedule {
  public:
   /// A constant desired attitude (the paper's Sec. V scenario).
@@ -44,6 +45,10 @@ class ReferenceSchedule {
   /// Waypoints with strictly increasing times (at most kMaxWaypoints, at least one).
   /// Throws SetupError (core/errors.hpp) otherwise (set-up code only).
   ReferenceSchedule(std::span<const Waypoint> waypoints, Interpolation interpolation);
+  /// The same with R_d(t) = R_before for t < t_0, the first waypoint's time (a scenario's
+  /// initial attitude: docs/scenario-format.md, "pet_erg", `[desired] schedule`).
+  ReferenceSchedule(std::span<const Waypoint> waypoints, Interpolation interpolation,
+                    const Mat3& R_before);
 
   /// R_d(t) (PET-ERG paper, Sec. II); allocation-free.
   [[nodiscard]] Mat3 at(double t) const noexcept;
@@ -64,6 +69,7 @@ class ReferenceSchedule {
  private:
   std::array<Waypoint, kMaxWaypoints> waypoints_{};
   std::array<Vec3, kMaxWaypoints> slew_{};  ///< log(R_iᵀR_{i+1}) of each segment
+  Mat3 before_{Mat3::Identity()};  ///< R_d(t) for t < waypoints_[0].t
   int count_{1};
   Interpolation interpolation_{Interpolation::hold};
 };

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace attiguard::governor {
 
@@ -26,6 +28,13 @@ double objective_derivative(const TorqueThresholdInputs& in, double theta) noexc
 
 bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 
+/// A number in messages: %.6g.
+std::string format_value(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
 }  // namespace
 
 double torque_threshold_objective(const TorqueThresholdInputs& in, double theta) noexcept {
@@ -40,6 +49,21 @@ TorqueThreshold compute_torque_threshold(const TorqueThresholdInputs& in, double
       !positive_finite(in.tau_max) || !positive_finite(tol)) {
     throw SetupError(
         "torque threshold: kp, kd, lambda_min, tau_max and tol must be positive and finite");
+  }
+  // Every term of f and f′ must be a normal double: k_p, k_d², c = λ_min/(2k_d²), c·τ_max²
+  // and c·k_p·τ_max. Outside that range (e.g. τ_max ≥ 1e155 or k_d = 1e300) f over/underflows
+  // and the bisection returns Γ_d = 0: a governor that never moves the reference while the run
+  // looks successful (docs/pet-erg.md, "Torque threshold Γ_d", range check).
+  const double c = kinetic_weight(in);
+  for (const double term : {in.kd * in.kd, c, c * in.tau_max * in.tau_max, c * in.kp * in.tau_max,
+                            in.kp * in.kp}) {
+    if (!std::isnormal(term)) {
+      throw SetupError("torque threshold: kp = " + format_value(in.kp) + ", kd = " +
+                       format_value(in.kd) + ", tau_max = " + format_value(in.tau_max) +
+                       " and lambda_min(J) = " + format_value(in.lambda_min) +
+                       " over/underflow Gamma_d in double precision; rescale the gains and the "
+                       "torque limit");
+    }
   }
   // f is convex on [0, π/2] (f″ = k_p cos θ + 2c (k_p cos θ)² 1[g>0] + 2c g₊ k_p sin θ ≥ 0),
   // f′(0) = −2c k_p τ_max < 0 and f′(π/2) = k_p > 0: bisection on the sign of f′ brackets the
@@ -83,7 +107,17 @@ TorqueThreshold compute_torque_threshold(const TorqueThresholdInputs& in, double
   // Rounding of f (a handful of operations on values ≤ k_p + c τ_max²) cannot lift the bound
   // above the exact minimum by more than a few units in the last place of that scale.
   const double scale = in.kp + kinetic_weight(in) * in.tau_max * in.tau_max;
-  out.gamma_d = std::max(0.0, out.gamma_d - 16.0 * std::numeric_limits<double>::epsilon() * scale);
+  const double allowance = 16.0 * std::numeric_limits<double>::epsilon() * scale;
+  out.gamma_d = std::max(0.0, out.gamma_d - allowance);
+  // Γ_d must be resolved: a bound of which the rounding allowance is more than 0.1 %, or that is
+  // not a normal number, is noise, not a threshold.
+  if (!std::isnormal(out.gamma_d) || out.gamma_d <= 1e3 * allowance) {
+    throw SetupError("torque threshold: Gamma_d = " + format_value(out.gamma_d) +
+                     " is not resolved in double precision (scale k_p + lambda_min tau_max^2/(2 "
+                     "k_d^2) = " + format_value(scale) + ") for kp = " + format_value(in.kp) +
+                     ", kd = " + format_value(in.kd) + ", tau_max = " + format_value(in.tau_max) +
+                     "; rescale the gains and the torque limit");
+  }
   return out;
 }
 

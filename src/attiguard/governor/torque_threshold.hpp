@@ -39,7 +39,9 @@ struct TorqueThreshold {
 /// well inside the required 1e-9, docs/errata.md, PET-ERG 1b). The returned gamma_d is a certified lower bound of
 /// the true minimum (tangent-line bound of the convex f, minus a few rounding units): it never
 /// overestimates, so {V ≤ Γ_d} never allows torque saturation.
-/// Throws SetupError (core/errors.hpp) when an input is not positive and finite (set-up code only).
+/// Throws SetupError (core/errors.hpp) when an input is not positive and finite, when a term of
+/// f over/underflows (e.g. τ_max ≥ 1e155, k_d = 1e300), or when the resulting Γ_d is not resolved
+/// in double precision (docs/pet-erg.md, "Torque threshold Γ_d"; set-up code only).
 [[nodiscard]] TorqueThreshold compute_torque_threshold(const TorqueThresholdInputs& in,
                                                        double tol = 1e-12);
 

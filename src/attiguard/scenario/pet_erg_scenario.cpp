@@ -2,8 +2,10 @@
 
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <numbers>
 #include <optional>
@@ -11,6 +13,8 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/governor/polytope_torque_threshold.hpp"
+#include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/ephemeris_check.hpp"
@@ -49,8 +53,11 @@ void check_desired(const TableReader& t, std::string_view key, const Mat3& R_d,
   }
 }
 
+/// [desired]: a constant R_d, or a schedule whose R_d is the initial attitude R0_ib before the
+/// first entry's t (docs/scenario-format.md, "pet_erg").
 governor::ReferenceSchedule parse_desired(const TableReader& t,
-                                          std::span<const ConeConstraint> cones) {
+                                          std::span<const ConeConstraint> cones,
+                                          const Mat3& R0_ib) {
   declare(t, {"attitude", "schedule", "interpolation"});
   const bool has_attitude = t.has("attitude");
   const bool has_schedule = t.has("schedule");
@@ -81,7 +88,94 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
     check_desired(e, "attitude", w.R_d, cones);
     waypoints.push_back(w);
   }
-  return governor::ReferenceSchedule(waypoints, interp);
+  return governor::ReferenceSchedule(waypoints, interp, R0_ib);
+}
+
+/// Γ_d must be computable: gains and torque limit whose Γ_d over/underflows are refused at
+/// control.tau_max (docs/pet-erg.md, "Torque threshold Γ_d", range check).
+void check_torque_threshold(const TableReader& control, const governor::GovernorParams& params) {
+  const double lambda_min =
+      Eigen::SelfAdjointEigenSolver<Mat3>(params.J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+  if (!(lambda_min > 0.0)) return;  // the inertia reader has refused it already
+  try {
+    (void)governor::compute_torque_threshold(
+        {params.gains.kp, params.gains.kd, lambda_min, params.tau_max});
+  } catch (const SetupError& e) {
+    control.fail("tau_max", e.what());
+  }
+}
+
+/// [imperfections] (docs/pet-erg.md, section 11; docs/scenario-format.md, "pet_erg"): only for
+/// the flight loop (control_period > 0).
+sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
+  declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
+              "attitude_bias", "attitude_noise", "rate_bias", "rate_noise", "delay_periods",
+              "torque_quantum", "seed"});
+  if (!(control_period > 0.0)) {
+    t.fail_here("imperfections act on the flight loop: set [control] control_period > 0");
+  }
+  sim::PetErgImperfections im;
+  const auto seed = static_cast<std::uint64_t>(t.integer_or("seed", 0, 0, 1L << 62));
+  dynamics::DisturbanceTorque& d = im.disturbance;
+  d.kind = enum_or(t, "disturbance", dynamics::kDisturbanceKindNames, dynamics::DisturbanceKind::none);
+  d.bound = t.number_or("disturbance_bound", 0.0, NumberRule::non_negative());
+  if (d.kind != dynamics::DisturbanceKind::none && !(d.bound > 0.0)) {
+    t.fail(t.has("disturbance_bound") ? "disturbance_bound" : "disturbance",
+           "a disturbance needs disturbance_bound > 0 [N m]");
+  }
+  if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
+  d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
+  d.hold = control_period;
+  d.seed = seed;
+  dynamics::AttitudeSensor& s = im.sensor;
+  if (t.has("attitude_bias")) s.attitude_bias_b = t.vector3("attitude_bias");
+  s.attitude_noise = t.number_or("attitude_noise", 0.0, NumberRule::non_negative());
+  if (t.has("rate_bias")) s.rate_bias_b = t.vector3("rate_bias");
+  s.rate_noise = t.number_or("rate_noise", 0.0, NumberRule::non_negative());
+  s.seed = seed;
+  if (s.attitude_error_bound() >= 0.5 * std::numbers::pi) {
+    t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
+           "attitude bias + noise must stay below pi/2 rad, got " + num(s.attitude_error_bound()));
+  }
+  im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
+  im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
+  return im;
+}
+
+/// [[wheels]] (docs/pet-erg.md, section 12): the array, and its polytope's Γ_d into params.
+void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
+  if (!root.has("wheels")) return;
+  const std::vector<TableReader> entries = root.array_of_tables("wheels");
+  for (const TableReader& e : entries) {
+    declare(e, {"axis_b", "torque_max", "momentum_max", "momentum"});
+    dynamics::ReactionWheel w;
+    w.axis_b = e.direction("axis_b");
+    w.torque_max = e.number("torque_max", NumberRule::positive());
+    w.momentum_max = e.number("momentum_max", NumberRule::positive());
+    w.momentum0 = e.number_or("momentum", 0.0, NumberRule{});
+    if (std::abs(w.momentum0) > w.momentum_max) {
+      e.fail("momentum", "initial wheel momentum exceeds momentum_max = " + num(w.momentum_max));
+    }
+    sc.wheels.push_back(w);
+  }
+  if (!(sc.control_period > 0.0)) {
+    entries.front().fail_here("reaction wheels act in the flight loop: set [control] control_period > 0");
+  }
+  try {
+    const dynamics::ReactionWheelArray array(sc.wheels);
+    std::vector<Vec3> rows;
+    std::vector<double> limits;
+    for (int i = 0; i < array.count(); ++i) {
+      rows.push_back(array.allocation_row(i));
+      limits.push_back(array.wheel(i).torque_max);
+    }
+    const governor::TorqueThreshold t = governor::compute_polytope_torque_threshold(
+        sc.params.gains.kp, sc.params.gains.kd, sc.params.J, rows, limits, &sc.wheel_binding);
+    sc.params.polytope_gamma_d = t.gamma_d;
+    sc.wheel_gamma_d_upper = t.upper_bound;
+  } catch (const SetupError& e) {
+    entries.front().fail_here(e.what());
+  }
 }
 
 }  // namespace
@@ -90,19 +184,18 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   sim::PetErgScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation"});
+                 "control", "erg", "cones", "simulation", "imperfections", "wheels"});
   sc.name = read_header(root, doc, "pet_erg");
   check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
-  (void)parse_governor_block(root, sc.params);
+  const TableReader control = parse_governor_block(root, sc.params, {"control_period"});
+  sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
 
   const TableReader body = root.table("body");
   declare(body, {"inertia"});
   sc.params.J = body.inertia("inertia");
+  check_torque_threshold(control, sc.params);
 
   sc.cones = parse_cones(root);
-
-  const TableReader desired = root.table("desired");
-  sc.desired = parse_desired(desired, sc.cones);
 
   std::optional<TableReader> initial = root.optional_table("initial");
   if (initial) {
@@ -118,6 +211,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     sc.R_g0 = sc.R0_ib;
   }
 
+  const TableReader desired = root.table("desired");
+  sc.desired = parse_desired(desired, sc.cones, sc.R0_ib);
+
   const TableReader simulation = root.table("simulation");
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
                        "max_step", "convergence_tolerance"});
@@ -131,6 +227,15 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   require_step_budget(simulation, sc.integrator, sc.duration);
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
+  if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
+    sc.imperfections = parse_imperfections(*im, sc.control_period);
+  }
+  parse_wheels(root, sc);
+  if (sc.control_period > 0.0) {
+    require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
+    require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
+                      "control steps");
+  }
   if (const std::optional<TableReader> erg = root.optional_table("erg");
       erg && sc.params.mode == GovernorMode::pet) {
     require_countable(*erg, "sampling_period", sc.params.Ts, sc.duration, kMaxRunSteps,

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
 
+#include "attiguard/control/torque_quantizer.hpp"
+#include "attiguard/dynamics/eigenaxis_slew.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
@@ -23,8 +27,9 @@ using lie::Vec3;
 /// A stop of the integrator and what happens there.
 struct Stop {
   double t{0.0};
-  bool sample{false};  ///< a sampling instant t_k of (5)
-  bool output{false};  ///< an output row
+  bool sample{false};   ///< a sampling instant t_k of (5) (continuous-time loop)
+  bool output{false};   ///< an output row
+  bool control{false};  ///< a control instant k·control_period (flight loop)
 };
 
 /// Sampling instants k·T_s in (0, duration), output instants, and schedule waypoints in
@@ -34,7 +39,16 @@ std::vector<Stop> stop_plan(const PetErgScenario& sc) {
   for (double t : uniform_instants(sc.duration, sc.output_interval)) {
     stops.push_back({t, false, true});
   }
-  if (sc.params.mode == GovernorMode::pet) {
+  if (sc.control_period > 0.0) {
+    // The flight loop: the governor's own clock evaluates (5) at the control instants.
+    for (long k = 1;; ++k) {
+      const double t = static_cast<double>(k) * sc.control_period;
+      if (t >= sc.duration - 1e-9 * sc.control_period) {
+        break;
+      }
+      stops.push_back({t, false, false, true});
+    }
+  } else if (sc.params.mode == GovernorMode::pet) {
     for (long k = 1;; ++k) {
       const double t = static_cast<double>(k) * sc.params.Ts;
       if (t >= sc.duration - 1e-9 * sc.params.Ts) {
@@ -50,15 +64,17 @@ std::vector<Stop> stop_plan(const PetErgScenario& sc) {
     }
   }
   std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
-  const double merge = 1e-9 * std::min(sc.params.Ts, sc.output_interval);
+  const double merge = 1e-9 * std::min({sc.params.Ts, sc.output_interval,
+                                        sc.control_period > 0.0 ? sc.control_period : sc.params.Ts});
   std::vector<Stop> merged;
   for (const Stop& s : stops) {
     if (!merged.empty() && s.t - merged.back().t <= merge) {
       Stop& m = merged.back();
       m.sample = m.sample || s.sample;
       m.output = m.output || s.output;
+      m.control = m.control || s.control;
       // Keep the exact multiple k·T_s (or the duration) as the stop time.
-      if (s.sample || (s.output && !m.sample)) {
+      if (s.sample || s.control || (s.output && !m.sample && !m.control)) {
         m.t = s.t;
       }
       continue;
@@ -68,14 +84,36 @@ std::vector<Stop> stop_plan(const PetErgScenario& sc) {
   return merged;
 }
 
+/// The end of a run: distance left, active cones, the eigenaxis bang-bang time of the slew and
+/// the outcome (docs/pet-erg.md, "Outcomes"), R_d_end = R_d(duration). r.convergence_time and
+/// r.reference_motion are set.
+void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R_d_end,
+                    PetErgResult& r) {
+  r.reference_distance_left = lie::distance(R_g_end, R_d_end);
+  r.active_cones.clear();
+  for (std::size_t i = 0; i < sc.cones.size(); ++i) {
+    if (governor::cone_cosine(sc.cones[i], R_g_end) < sc.cones[i].zeta) {
+      r.active_cones.push_back(static_cast<int>(i));
+    }
+  }
+  r.slew_angle = lie::distance(sc.R0_ib, R_d_end);
+  r.eigenaxis_bang_bang_time =
+      dynamics::eigenaxis_bang_bang_time(sc.params.J, sc.R0_ib, R_d_end, sc.params.tau_max);
+  OutcomeEvidence e;
+  e.governed = sc.params.mode != GovernorMode::none;
+  e.convergence_time = r.convergence_time;
+  e.distance_left = r.reference_distance_left;
+  e.distance_tolerance = std::acos(std::max(-1.0, 1.0 - sc.convergence_tolerance));
+  e.last_half = r.reference_motion;
+  r.outcome = classify_outcome(e);
+}
+
 }  // namespace
 
-PetErgResult simulate_pet_erg(const PetErgScenario& sc,
-                              const PetErgRowObserver& on_output) {
-  const governor::AttitudeGovernor gov(sc.params, sc.cones);
-  const dynamics::RigidBody body(sc.params.J);
-  const int n_cones = static_cast<int>(sc.cones.size());
+namespace {
 
+/// The figures known before the run starts.
+PetErgResult initial_result(const PetErgScenario& sc, const governor::AttitudeGovernor& gov) {
   PetErgResult r;
   r.gamma_d = gov.gamma_d();
   r.gamma_d_upper = gov.torque_threshold().upper_bound;
@@ -87,6 +125,60 @@ PetErgResult simulate_pet_erg(const PetErgScenario& sc,
   r.min_pointing_margin = std::numeric_limits<double>::infinity();
   r.min_margin_per_cone.assign(sc.cones.size(), std::numeric_limits<double>::infinity());
   r.max_V_minus_Gamma = -std::numeric_limits<double>::infinity();
+  r.reference_motion = ReferenceMotion(0.5 * sc.duration);
+  return r;
+}
+
+/// Folds one instant into the figures: `out` is the governor's view with the torque applied.
+void record(const PetErgScenario& sc, PetErgResult& r, double t, const Mat3& R_d, const Mat3& R_ib,
+            const GovernorOutput& out) {
+  if (lie::phi(R_d.transpose() * R_ib) > sc.convergence_tolerance) {
+    r.convergence_time = -1.0;
+  } else if (r.convergence_time < 0.0) {
+    r.convergence_time = t;
+  }
+  r.reference_motion.observe(t, out.R_g);
+  r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
+  r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
+  for (int i = 0; i < out.cone_count; ++i) {
+    const double m = out.margins[static_cast<std::size_t>(i)];
+    auto& mi = r.min_margin_per_cone[static_cast<std::size_t>(i)];
+    mi = std::min(mi, m);
+    r.min_pointing_margin = std::min(r.min_pointing_margin, m);
+    if (m < 0.0 && r.first_pointing_violation_time < 0.0) {
+      r.first_pointing_violation_time = t;
+    }
+  }
+}
+
+/// The end of either loop: final errors, outcome and the integrator's counters.
+void finish(const PetErgScenario& sc, const PetErgState& y, const integrate::IntegrationStats& stats,
+            PetErgResult& r) {
+  const Mat3 R_d_end = sc.desired.at(sc.duration);
+  const Mat3 R_g_end = sc.params.mode == GovernorMode::none ? R_d_end : y.R[1];
+  r.final_attitude_error = std::max(0.0, lie::phi(R_d_end.transpose() * y.R[0]));
+  r.final_reference_error = std::max(0.0, lie::phi(R_d_end.transpose() * R_g_end));
+  r.final_omega_norm = y.x.norm();
+  finish_outcome(sc, R_g_end, R_d_end, r);
+  r.steps = stats.accepted_steps;
+  r.rejected_steps = stats.rejected_steps;
+  r.evaluations = stats.evaluations;
+}
+
+std::vector<double> stop_times(const std::vector<Stop>& plan) {
+  std::vector<double> times;
+  times.reserve(plan.size());
+  for (const Stop& s : plan) {
+    times.push_back(s.t);
+  }
+  return times;
+}
+
+/// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
+PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  const governor::AttitudeGovernor gov(sc.params, sc.cones);
+  const dynamics::RigidBody body(sc.params.J);
+  PetErgResult r = initial_result(sc, gov);
 
   PetErgState y;
   y.R[0] = sc.R0_ib;
@@ -105,22 +197,7 @@ PetErgResult simulate_pet_erg(const PetErgScenario& sc,
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
     const Mat3 R_d = sc.desired.at(t);
     const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag);
-    if (lie::phi(R_d.transpose() * s.R[0]) > sc.convergence_tolerance) {
-      r.convergence_time = -1.0;
-    } else if (r.convergence_time < 0.0) {
-      r.convergence_time = t;
-    }
-    r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
-    r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
-    for (int i = 0; i < n_cones; ++i) {
-      const double m = out.margins[static_cast<std::size_t>(i)];
-      auto& mi = r.min_margin_per_cone[static_cast<std::size_t>(i)];
-      mi = std::min(mi, m);
-      r.min_pointing_margin = std::min(r.min_pointing_margin, m);
-      if (m < 0.0 && r.first_pointing_violation_time < 0.0) {
-        r.first_pointing_violation_time = t;
-      }
-    }
+    record(sc, r, t, R_d, s.R[0], out);
     return out;
   };
   auto sample = [&](const PetErgState& s) {
@@ -141,11 +218,7 @@ PetErgResult simulate_pet_erg(const PetErgScenario& sc,
   }
 
   const std::vector<Stop> plan = stop_plan(sc);
-  std::vector<double> times;
-  times.reserve(plan.size());
-  for (const Stop& s : plan) {
-    times.push_back(s.t);
-  }
+  const std::vector<double> times = stop_times(plan);
   std::size_t next = 0;
   auto on_stop = [&](double t, PetErgState& s) {
     const Stop& stop = plan[next++];
@@ -161,16 +234,147 @@ PetErgResult simulate_pet_erg(const PetErgScenario& sc,
   auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
   const integrate::IntegrationStats stats =
       integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
-
-  const Mat3 R_d_end = sc.desired.at(sc.duration);
-  const Mat3 R_g_end = sc.params.mode == GovernorMode::none ? R_d_end : y.R[1];
-  r.final_attitude_error = std::max(0.0, lie::phi(R_d_end.transpose() * y.R[0]));
-  r.final_reference_error = std::max(0.0, lie::phi(R_d_end.transpose() * R_g_end));
-  r.final_omega_norm = y.x.norm();
-  r.steps = stats.accepted_steps;
-  r.rejected_steps = stats.rejected_steps;
-  r.evaluations = stats.evaluations;
+  finish(sc, y, stats, r);
   return r;
+}
+
+/// control_period > 0: the flight loop. AttitudeGovernor::step runs at t_k = k·h with the state
+/// of that instant and its torque is held until t_{k+1} (zero-order hold); between the instants
+/// only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight loop").
+PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  governor::GovernorParams params = sc.params;
+  params.bounded_step = true;
+  governor::AttitudeGovernor gov(params, sc.cones);
+  const dynamics::RigidBody body(sc.params.J);
+  PetErgResult r = initial_result(sc, gov);
+
+  PetErgState y;
+  y.R[0] = sc.R0_ib;
+  y.R[1] = sc.R_g0;
+  y.x = sc.omega0_b;
+  const PetErgImperfections& im = sc.imperfections;
+  Vec3 tau_held = Vec3::Zero();     // applied on [t_k, t_{k+1})
+  Vec3 tau_pending = Vec3::Zero();  // computed at t_k, applied from t_{k+1} (delay_periods = 1)
+  std::uint64_t k_control = 0;
+  // Reaction wheels (docs/pet-erg.md, section 12): wheel torques held like the body torque, the
+  // momenta linear in t between control instants, h(t) = h_k − u (t − t_k).
+  const bool wheels = !sc.wheels.empty();
+  const dynamics::ReactionWheelArray array =
+      wheels ? dynamics::ReactionWheelArray(sc.wheels) : dynamics::ReactionWheelArray();
+  dynamics::WheelVector u_held{};
+  dynamics::WheelVector u_pending{};
+  dynamics::WheelVector h_k{};
+  double t_k = 0.0;
+  for (int i = 0; i < array.count(); ++i) h_k[static_cast<std::size_t>(i)] = array.wheel(i).momentum0;
+  auto momenta = [&](double t) {
+    dynamics::WheelVector h = h_k;
+    for (int i = 0; i < array.count(); ++i) {
+      h[static_cast<std::size_t>(i)] -= u_held[static_cast<std::size_t>(i)] * (t - t_k);
+    }
+    return h;
+  };
+
+  auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
+    PetErgState::Tangent d;
+    d.segment<3>(0) = s.x;
+    d.segment<3>(3).setZero();  // R_g changes only at the control instants
+    // eq. (1) with the held torque and the disturbance d(t) (docs/pet-erg.md, section 11) and
+    // the wheels' gyroscopic torque (A h) × ω (section 12)
+    Vec3 tau = tau_held + im.disturbance.at(t);
+    if (wheels) tau += array.body_momentum(momenta(t)).cross(s.x);
+    d.segment<3>(6) = body.angular_acceleration(s.x, tau);
+    return d;
+  };
+  // The governor's view of the current state with the torque actually applied.
+  auto view = [&](const PetErgState& s, const Mat3& R_d) {
+    GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, gov.trigger_flag());
+    out.tau_b = tau_held;
+    return out;
+  };
+  auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
+    const Mat3 R_d = sc.desired.at(t);
+    const GovernorOutput out = view(s, R_d);
+    record(sc, r, t, R_d, s.R[0], out);
+    if (wheels) {
+      const dynamics::WheelVector h = momenta(t);
+      for (int i = 0; i < array.count(); ++i) {
+        r.max_wheel_momentum_ratio = std::max(
+            r.max_wheel_momentum_ratio, std::abs(h[static_cast<std::size_t>(i)]) / array.wheel(i).momentum_max);
+      }
+    }
+    return out;
+  };
+  auto control = [&](double t, PetErgState& s) {
+    // What the flight software sees (sensor errors), computes, and commands (quantised,
+    // possibly one period late): docs/pet-erg.md, section 11.
+    const dynamics::Measurement m = im.sensor.measure(s.R[0], s.x, k_control++);
+    const GovernorOutput& out = gov.step(t, m.R_ib, m.omega_b, sc.desired.at(t));
+    const Vec3 command = control::quantize_torque(out.tau_b, im.torque_quantum);
+    if (wheels) {
+      h_k = momenta(t);
+      t_k = t;
+      // u = A⁺τ (minimum norm), clipped to the wheels' limits; the demand ratio is reported.
+      for (int i = 0; i < array.count(); ++i) {
+        r.max_wheel_torque_ratio = std::max(r.max_wheel_torque_ratio,
+                                            std::abs(array.allocation_row(i).dot(command)) /
+                                                array.wheel(i).torque_max);
+      }
+      const dynamics::WheelVector u = array.allocate(command);
+      u_held = im.delay_periods == 1 ? u_pending : u;
+      u_pending = u;
+      tau_held = array.body_torque(u_held);
+    } else if (im.delay_periods == 1) {
+      tau_held = tau_pending;
+      tau_pending = command;
+    } else {
+      tau_held = command;
+    }
+    s.R[1] = params.mode == GovernorMode::none ? sc.desired.at(t) : gov.reference();
+    if (out.sampled) {
+      ++r.samples;
+      r.samples_updating += out.trigger ? 1 : 0;
+    }
+  };
+
+  gov.reset(0.0, sc.R_g0);
+  control(0.0, y);
+  {
+    const GovernorOutput out0 = monitor(0.0, y);
+    if (on_output) {
+      on_output(0.0, y, sc.desired.at(0.0), out0);
+    }
+  }
+  const std::vector<Stop> plan = stop_plan(sc);
+  const std::vector<double> times = stop_times(plan);
+  std::size_t next = 0;
+  auto on_stop = [&](double t, PetErgState& s) {
+    const Stop& stop = plan[next++];
+    if (stop.control) {
+      control(t, s);
+    }
+    const GovernorOutput out = monitor(t, s);
+    if (stop.output && on_output) {
+      on_output(t, s, sc.desired.at(t), out);
+    }
+    return true;
+  };
+  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
+  const integrate::IntegrationStats stats =
+      integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
+  finish(sc, y, stats, r);
+  if (wheels) {
+    const dynamics::WheelVector h = momenta(sc.duration);
+    r.final_wheel_momentum.assign(h.begin(), h.begin() + array.count());
+    r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
+  }
+  return r;
+}
+
+}  // namespace
+
+PetErgResult simulate_pet_erg(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  return sc.control_period > 0.0 ? simulate_flight_loop(sc, on_output)
+                                 : simulate_continuous_time(sc, on_output);
 }
 
 namespace {
@@ -181,6 +385,58 @@ nlohmann::json finite_or_null(double x) {
 
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1), v(2)}); }
 
+/// The [imperfections] of the run, echoed in summary.json (docs/pet-erg.md, section 11).
+nlohmann::json imperfections_json(const PetErgImperfections& im) {
+  return {{"disturbance", std::string(dynamics::kDisturbanceKindNames.name(im.disturbance.kind))},
+          {"disturbance_bound", im.disturbance.bound},
+          {"attitude_error_bound", im.sensor.attitude_error_bound()},
+          {"rate_error_bound", im.sensor.rate_error_bound()},
+          {"delay_periods", im.delay_periods},
+          {"torque_quantum", im.torque_quantum}};
+}
+
+std::string fmt(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+/// One sentence with the numbers of a run that did not converge (docs/pet-erg.md, "Outcomes").
+std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
+  const double left_deg = r.reference_distance_left * 180.0 / std::numbers::pi;
+  const std::string error = "attitude error phi = " + fmt(r.final_attitude_error) +
+                            " > tolerance " + fmt(sc.convergence_tolerance) + " at t = " +
+                            fmt(sc.duration) + " s";
+  std::string cones;
+  for (int i : r.active_cones) cones += (cones.empty() ? "" : ", ") + std::to_string(i);
+  const std::string active =
+      cones.empty() ? "no cone's repulsive band active" : "repulsive band of cones [" + cones + "] active";
+  switch (r.outcome) {
+    case PetErgOutcome::stalled:
+      return "reference stopped " + fmt(left_deg) + " deg short of R_d (moved " +
+             fmt(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
+             " deg over the last half of the run, " + active + "); " + error;
+    case PetErgOutcome::chattering:
+      return "reference chatters: over the last half of the run it travelled " +
+             fmt(r.reference_motion.path_length() * 180.0 / std::numbers::pi) + " deg for a net " +
+             fmt(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
+             " deg, reversing its direction " + std::to_string(r.reference_motion.reversals()) +
+             " times (largest step " +
+             fmt(r.reference_motion.largest_move() * 180.0 / std::numbers::pi) +
+             " deg); reduce kappa or the integrator step, or set control_period; " + error;
+    case PetErgOutcome::not_converged_by_end:
+      if (r.reference_distance_left <= std::acos(std::max(-1.0, 1.0 - sc.convergence_tolerance))) {
+        return "reference at R_d (" + fmt(left_deg) +
+               " deg left) but the attitude has not settled within the tolerance (slow damping, "
+               "a disturbance or a sensor bias); " + error;
+      }
+      return "still " + fmt(left_deg) + " deg between reference and R_d (" + active + "); " + error;
+    case PetErgOutcome::converged:
+      break;
+  }
+  return {};
+}
+
 }  // namespace
 
 nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) {
@@ -190,6 +446,18 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["governor"] = std::string(governor::kGovernorModeNames.name(sc.params.mode));
   j["integrator"] = std::string(integrate::kMethodNames.name(sc.integrator.method));
   j["duration"] = sc.duration;
+  j["control_period"] = sc.control_period;
+  j["imperfections"] = imperfections_json(sc.imperfections);
+  if (!sc.wheels.empty()) {
+    j["wheels"] = static_cast<long>(sc.wheels.size());
+    j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
+    j["wheel_binding"] = sc.wheel_binding;
+    j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
+    j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
+    j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
+    j["wheel_momentum_satisfied"] = r.max_wheel_momentum_ratio <= 1.0;
+    j["final_wheel_momentum"] = r.final_wheel_momentum;
+  }
   j["kp"] = sc.params.gains.kp;
   j["kd"] = sc.params.gains.kd;
   j["tau_max"] = sc.params.tau_max;
@@ -219,7 +487,9 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["first_pointing_violation_time"] =
       r.first_pointing_violation_time >= 0.0 ? nlohmann::json(r.first_pointing_violation_time)
                                              : nlohmann::json(nullptr);
-  j["constraints_satisfied"] = torque_ok && pointing_ok;
+  const bool wheels_ok = sc.wheels.empty() || (r.max_wheel_torque_ratio <= 1.0 &&
+                                                r.max_wheel_momentum_ratio <= 1.0);
+  j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
   j["final_attitude_error"] = r.final_attitude_error;
@@ -228,6 +498,19 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["convergence_tolerance"] = sc.convergence_tolerance;
   j["convergence_time"] =
       r.convergence_time >= 0.0 ? nlohmann::json(r.convergence_time) : nlohmann::json(nullptr);
+  j["outcome"] = std::string(kPetErgOutcomeNames.name(r.outcome));
+  if (r.outcome != PetErgOutcome::converged) j["outcome_reason"] = outcome_reason(sc, r);
+  j["reference_distance_left"] = r.reference_distance_left;
+  j["reference_moves_last_half"] = r.reference_motion.moves();
+  j["reference_reversals_last_half"] = r.reference_motion.reversals();
+  j["reference_path_last_half"] = r.reference_motion.path_length();
+  j["active_cones"] = r.active_cones;
+  j["slew_angle_deg"] = r.slew_angle * 180.0 / std::numbers::pi;
+  j["eigenaxis_bang_bang_time"] = r.eigenaxis_bang_bang_time;
+  j["convergence_time_over_bang_bang"] =
+      r.convergence_time >= 0.0 && r.eigenaxis_bang_bang_time > 0.0
+          ? nlohmann::json(r.convergence_time / r.eigenaxis_bang_bang_time)
+          : nlohmann::json(nullptr);
   j["samples"] = r.samples;
   j["samples_updating"] = r.samples_updating;
   j["steps"] = r.steps;

@@ -13,6 +13,7 @@
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/integrate/product_state.hpp"
 #include "attiguard/io/row_sink.hpp"
+#include "attiguard/sim/pet_erg_outcome.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
 
 namespace attiguard::sim {
@@ -45,6 +46,18 @@ struct PetErgResult {
   /// Earliest time from which φ(R_d(t)ᵀR(t)) ≤ the scenario's convergence_tolerance at every
   /// later step up to the end; −1 when the end is not within the tolerance.
   double convergence_time{-1.0};
+  PetErgOutcome outcome{PetErgOutcome::not_converged_by_end};  ///< docs/pet-erg.md, "Outcomes"
+  double reference_distance_left{0.0};  ///< d(R_g, R_d) at the end [rad] (0 in mode none)
+  ReferenceMotion reference_motion;     ///< R_g over the last half of the run
+  std::vector<int> active_cones;        ///< cones with c(R_g) < ζ at the end (repulsive band)
+  double slew_angle{0.0};               ///< d(R_0, final R_d) [rad]
+  double eigenaxis_bang_bang_time{0.0};  ///< of that slew at τ_max (dynamics/eigenaxis_slew.hpp)
+  /// Wheels (docs/pet-erg.md, section 12): max over the control instants of |(A⁺τ_cmd)_i| /
+  /// u_max,i (> 1: the allocation demanded more than a wheel gives, the command was clipped) …
+  double max_wheel_torque_ratio{0.0};
+  /// … and max over the steps of |h_i| / h_max,i; the momenta at the end [N·m·s].
+  double max_wheel_momentum_ratio{0.0};
+  std::vector<double> final_wheel_momentum;
   long samples{0};           ///< sampling instants at which (5) was evaluated (mode pet)
   long samples_updating{0};  ///< of which the condition held
   long steps{0};

@@ -244,7 +244,8 @@ MetricSolution fallback_metric(const LmiEnclosure& enc, const StateMetric& prev,
   MetricSolution sol = certify(enc, prev, {s * Mat3::Identity(), Mat3::Zero(), s * Mat3::Identity()},
                                mu, identity_metric_rate(enc), rigorous);
   sol.status = SdpStatus::failed;
-  sol.message = "fallback Q = P = s I at the identity-metric rate";
+  sol.message = sol.ok ? "fallback Q = P = s I at the identity-metric rate"
+                       : "fallback Q = P = s I at the identity-metric rate: " + sol.message;
   return sol;
 }
 

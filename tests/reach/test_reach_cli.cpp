@@ -111,3 +111,33 @@ TEST(ReachCli, UnknownKeyAndMissingFileAreInvalidInput) {
 }
 
 #endif  // ATTIGUARD_CLI_PATH
+
+// Issue 15: the slow PD loop (J ≈ 100 kg·m², k_p = 0.4, k_d = 12, 0.05 rad / 0.005 rad/s around a
+// 30° offset) is verified over 60 s with the coupled metric, contracting at every step, with no
+// escape found by the sampled and adversarial checks; the product metric loses the tube early.
+TEST(ReachCli, SlowPdLoopIsVerifiedOver60SecondsWithTheCoupledMetric) {
+  const auto out = fresh_dir("reach_slow_pd_out");
+  const auto r = run_cli("reach examples/conreach_slow_pd.toml --out '" + (out / "c").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_file(out / "c" / "reach.json"));
+  EXPECT_EQ(j["metric"], "coupled");
+  EXPECT_EQ(j["verdict"], "safe");
+  ASSERT_EQ(j["steps"].size(), 60U);
+  EXPECT_DOUBLE_EQ(j["steps"].back()["t_end"].get<double>(), 60.0);
+  for (const auto& st : j["steps"]) {
+    EXPECT_LT(st["c"].get<double>(), 0.0) << st["index"];
+    EXPECT_EQ(st["rigour"], "rigorous");
+  }
+  EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
+  EXPECT_LT(j["adversarial"]["worst_ratio"].get<double>(), 1.0);
+  EXPECT_GE(j["adversarial"]["attitude_tightness"].get<double>(), 1.0);
+
+  std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "examples/conreach_slow_pd.toml");
+  text.replace(text.find("[soundness]"), 0, "metric = \"product\"\n\n");
+  const auto product = out / "product.toml";
+  std::ofstream(product) << text;
+  const auto p = run_cli("reach '" + product.string() + "' --out '" + (out / "p").string() + "'");
+  EXPECT_EQ(p.exit_code, 3) << p.err;
+  EXPECT_NE(p.err.find("no a priori enclosure"), std::string::npos) << p.err;
+  std::filesystem::remove_all(out);
+}

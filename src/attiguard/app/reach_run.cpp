@@ -41,7 +41,7 @@ int choose_chart(const std::vector<ReachResult>& results) {
     double worst = 0.0;
     for (const ReachResult& res : results) {
       worst = std::max(worst, chart_coordinates(c, res.nominal.front().R).norm() +
-                                  attitude_enclosure_radius(res.Q0, res.r0));
+                                  attitude_enclosure_radius(attitude_schur({res.Q0, res.S0, res.P0}), res.r0));
       for (const ReachStep& st : res.steps) {
         worst = std::max(worst, chart_coordinates(c, st.R).norm() + st.attitude_radius);
       }
@@ -89,7 +89,10 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   const ReachResult& r0 = results.front();
   j["initial"] = {{"attitude_radius", sc.initial.attitude_radius},
                   {"omega_radius", sc.initial.omega_radius},
-                  {"r0", r0.r0}, {"Q0", mat_json(r0.Q0)}, {"P0", mat_json(r0.P0)}};
+                  {"r0", r0.r0}, {"Q0", mat_json(r0.Q0)}, {"S0", mat_json(r0.S0)},
+                  {"P0", mat_json(r0.P0)}};
+  j["metric"] = std::string(reach::kMetricNames.name(sc.settings.metric));
+  j["rigour"] = std::string(reach::kRigourNames.name(sc.settings.rigour));
   nlohmann::json steps = nlohmann::json::array();
   for (const ReachStep& st : r0.steps) {
     nlohmann::json trials = nlohmann::json::array();
@@ -97,7 +100,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
       trials.push_back({{"c", t.c}, {"feasible", t.feasible}, {"enclosure_radius", t.enclosure_radius}});
     }
     steps.push_back({{"index", st.index}, {"t", st.t0}, {"t_end", st.t1}, {"c", st.c},
-                     {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"P", mat_json(st.P)},
+                     {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"S", mat_json(st.S)}, {"P", mat_json(st.P)},
                      {"r", st.r},
                      {"omega_box", {{"lower", vec_json(st.omega_box.lo)}, {"upper", vec_json(st.omega_box.hi)}}},
                      {"attitude_box_radius", st.attitude_box.radius},
@@ -105,6 +108,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
                      {"omega_half_widths", vec_json(st.omega_half_widths)},
                      {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
                      {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
+                     {"rigour", st.proved_rigorously ? "rigorous" : "float"},
                      {"numerical_allowance", st.numerical_allowance},
                      {"nominal_error_R", st.nominal_error_R},
                      {"nominal_error_omega", st.nominal_error_omega},
@@ -201,8 +205,11 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
                              static_cast<double>(chart), p(0), p(1), p(2)});
         }
       };
-      emit(0, 0.0, res.Q0, res.r0, res.nominal.front().R);
-      for (const ReachStep& st : res.steps) emit(st.index + 1, st.t1, st.Q, st.r, st.R);
+      // The attitude projection of B_M is inside B_{Q−SP⁻¹Sᵀ} (docs/reach.md, coupled fact 3).
+      emit(0, 0.0, attitude_schur({res.Q0, res.S0, res.P0}), res.r0, res.nominal.front().R);
+      for (const ReachStep& st : res.steps) {
+        emit(st.index + 1, st.t1, attitude_schur(st.metric()), st.r, st.R);
+      }
     });
     io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
     for (const auto& cell_rows : rows) {

@@ -45,7 +45,7 @@ Score score(const ClosedLoop& loop, const InitialSet& cell, const ReachResult& r
   simulate(loop, R0, w0, times, step, [&](std::size_t k, const Mat3& R, const Vec3& w) {
     if (k == 0) return;  // t = 0: the covering ball of the initial set, ratio ≤ 1 by construction
     const ReachStep& st = res.steps[k - 1];
-    const double ratio = product_distance_upper({st.Q, st.P}, st.R, st.omega, R, w) / st.r;
+    const double ratio = metric_distance_upper(st.metric(), st.R, st.omega, R, w) / st.r;
     const double r = std::isfinite(ratio) ? ratio : 1e300;
     if (r > s.ratio) {
       s.ratio = r;

@@ -80,18 +80,18 @@ struct Choice {
   double c_identity{0.0};
 };
 
-Choice choose_metric(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, double r, double dt,
-                     const ConReachSettings& s, const MetricSdpSettings& sdp) {
+/// Product metric: the paper's line search or the min-enclosure scan (docs/reach.md, "Rate
+/// selection"). `size_of` maps a solution to the bi-invariant enclosure radius of its ball.
+Choice choose_product(const LmiEnclosure& enc, const StateMetric& prev, const ConReachSettings& s,
+                      const MetricSdpSettings& sdp,
+                      const std::function<double(const MetricSolution&)>& size_of) {
   Choice ch;
   ch.c_identity = identity_metric_rate(enc);
-  auto size_of = [&](const MetricSolution& m) {
-    return r * std::exp(m.c * dt) / std::sqrt(std::min(lambda_min(m.Q), lambda_min(m.P)));
-  };
   bool have = false;
   if (s.mode == RateMode::line_search) {
     for (int j = 0; j < s.line_search_steps; ++j) {
       const double c = ch.c_identity - j * s.rate_step;
-      MetricSolution m = solve_metric(enc, Q, P, c, MetricObjective::max_trace_q, sdp);
+      MetricSolution m = solve_metric(enc, prev, c, MetricObjective::max_trace_q, sdp);
       ++ch.solves;
       const bool diag_ok = m.ok && m.Q.diagonal().minCoeff() >= s.min_diagonal &&
                            m.P.diagonal().minCoeff() >= s.min_diagonal;
@@ -105,7 +105,7 @@ Choice choose_metric(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, doub
     int worse = 0;  // consecutive candidates worse than the best: stop after 2
     for (int j = 0; j < s.min_enclosure_candidates && worse < 2; ++j) {
       const double c = ch.c_identity - j * s.rate_step;
-      MetricSolution m = solve_metric(enc, Q, P, c, MetricObjective::max_min_eigenvalue, sdp);
+      MetricSolution m = solve_metric(enc, prev, c, MetricObjective::max_min_eigenvalue, sdp);
       ++ch.solves;
       ch.trials.push_back({c, m.ok, m.ok ? size_of(m) : 0.0});
       if (!m.ok) break;
@@ -118,7 +118,7 @@ Choice choose_metric(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, doub
         ++worse;
       }
     }
-    const MetricSolution fb = fallback_metric(enc, Q, P);
+    const MetricSolution fb = fallback_metric(enc, prev, sdp.rigorous);
     if (fb.ok && (!have || size_of(fb) < best)) {
       ch.sol = fb;
       ch.fallback = true;
@@ -126,11 +126,100 @@ Choice choose_metric(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, doub
     }
   }
   if (!have) {
-    ch.sol = fallback_metric(enc, Q, P);
+    ch.sol = fallback_metric(enc, prev, sdp.rigorous);
     ch.fallback = true;
+  }
+  return ch;
+}
+
+/// Coupled metric: a golden-section search of the rate minimising the enclosure radius
+/// (max_min_eigenvalue objective). The feasible rates form [c_min, ∞) (L(M, c) decreases with c),
+/// so +∞ (infeasible) on the left of the bracket moves it right. First step: the bracket
+/// [c_max − (2|c_max| + 1), c_max], 12 iterations; later steps: around the previous rate,
+/// [c_prev − w, c_prev + w], w = 0.2 + 0.5|c_prev|, 7 iterations, and the first step's search
+/// when no rate of that bracket is accepted. The fallback competes too
+/// (docs/reach.md, "Coupled metrics", rate selection).
+Choice choose_coupled(const LmiEnclosure& enc, const StateMetric& prev, const MetricSdpSettings& sdp,
+                      const std::function<double(const MetricSolution&)>& size_of,
+                      const double* c_prev) {
+  Choice ch;
+  ch.c_identity = identity_metric_rate(enc);
+  double best = std::numeric_limits<double>::infinity();
+  auto trial = [&](double c) {
+    MetricSolution m = solve_metric(enc, prev, c, MetricObjective::max_min_eigenvalue, sdp);
+    ++ch.solves;
+    const double size = m.ok ? size_of(m) : std::numeric_limits<double>::infinity();
+    ch.trials.push_back({c, m.ok, m.ok ? size : 0.0});
+    if (m.ok && size < best) {
+      best = size;
+      ch.sol = m;
+    }
+    return size;
+  };
+  auto golden = [&](double a, double b, int iterations) {
+    constexpr double g = 0.6180339887498949;
+    double x1 = b - g * (b - a);
+    double x2 = a + g * (b - a);
+    double f1 = trial(x1);
+    double f2 = trial(x2);
+    for (int it = 0; it < iterations; ++it) {
+      if (std::isfinite(f1) && f1 <= f2) {
+        b = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = b - g * (b - a);
+        f1 = trial(x1);
+      } else {
+        a = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = a + g * (b - a);
+        f2 = trial(x2);
+      }
+    }
+  };
+  if (c_prev != nullptr) {
+    const double w = 0.2 + 0.5 * std::abs(*c_prev);
+    golden(*c_prev - w, *c_prev + w, 7);
+  }
+  if (!std::isfinite(best)) {
+    golden(ch.c_identity - (2.0 * std::abs(ch.c_identity) + 1.0), ch.c_identity, 12);
+  }
+  const MetricSolution fb = fallback_metric(enc, prev, sdp.rigorous);
+  if (fb.ok && (!std::isfinite(best) || size_of(fb) < best)) {
+    ch.sol = fb;
+    ch.fallback = true;
+  }
+  return ch;
+}
+
+Choice choose_metric(const LmiEnclosure& enc, const StateMetric& prev, const ConReachSettings& s,
+                     const MetricSdpSettings& sdp,
+                     const std::function<double(const MetricSolution&)>& size_of,
+                     const double* c_prev) {
+  Choice ch = s.metric == MetricKind::coupled ? choose_coupled(enc, prev, sdp, size_of, c_prev)
+                                              : choose_product(enc, prev, s, sdp, size_of);
+  if (!ch.sol.ok && sdp.rigorous) {
+    throw VerificationFailure("ConReach: no metric of the step can be proved rigorously (" +
+                              ch.sol.message + ")");
   }
   if (!ch.sol.ok) throw NumericalError("ConReach: no certified contraction metric (" + ch.sol.message + ")");
   return ch;
+}
+
+/// The bi-invariant enclosure radius of B_M(x, r): r/√min(λ_min(Q − SP⁻¹Sᵀ), λ_min(P − SᵀQ⁻¹S)).
+double enclosure_radius(const StateMetric& m, double r) {
+  return r / std::sqrt(std::min(lambda_min(attitude_schur(m)), lambda_min(omega_schur(m))));
+}
+
+/// Deviation bounds (tube.hpp) of every state in B_M(x, r): the projections of coupled facts 2, 3.
+Deviation ball_deviation(const StateMetric& m, double r) {
+  const Mat3 Pw = omega_schur(m);
+  Deviation d;
+  d.head<3>() = p_ball_half_widths(Pw, r);
+  d(3) = r / std::sqrt(lambda_min(Pw));
+  d(4) = r / std::sqrt(lambda_min(attitude_schur(m)));
+  return d;
 }
 
 }  // namespace
@@ -161,8 +250,8 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
     if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
   }
 
-  Mat3 Q = Mat3::Identity();
-  Mat3 P = initial.P0;
+  const bool coupled = s.metric == MetricKind::coupled;
+  StateMetric M{Mat3::Identity(), Mat3::Zero(), initial.P0};
   double r = res.r0;
   const double a = initial.attitude_radius;
   const double b = initial.omega_radius;
@@ -177,31 +266,60 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
     st.t1 = times[static_cast<std::size_t>((i + 1) * m)];
     const std::span<const NominalPoint> span(res.nominal.data() + static_cast<std::ptrdiff_t>(i) * m,
                                              static_cast<std::size_t>(m) + 1);
-    Deviation ball;
-    ball.head<3>() = p_ball_half_widths(P, r);
-    ball(3) = r / std::sqrt(lambda_min(P));
-    ball(4) = r / std::sqrt(lambda_min(Q));
+    const Deviation ball = ball_deviation(M, r);
     const Deviation z_state = carried.cwiseMin(ball);
     const TubeResult state_tube = propagate_tube(loop, span, z_state);
     carried = state_tube.end;
     st.state_tube = state_tube.segments;
 
+    // Coupled metric, step 0: the initial ball is re-expressed in the new metric M_1 itself,
+    // B_{M_1}(x_0, r_0'), r_0' = metric_cover_radius(M_1, a, b), joined to the centre by the
+    // straight curves (R0 exp(sŵ), ω0 + sΔω) inside the initial set (docs/reach.md, "Coupled
+    // metrics"): U_0 is the flow of the initial set and M_1 ⪯ M_0 is only a normalisation.
+    const bool recover = coupled && i == 0;
+    auto radius_for = [&](const MetricSolution& sol) {
+      return recover ? metric_cover_radius({sol.Q, sol.S, sol.P}, a, b) : r;
+    };
+    // Product metric: the ball at t_{i+1}. Coupled metric: the ball at T if the rate held for
+    // the rest of the horizon, because the metric can only shrink afterwards (M_{i+1} ⪯ M_i):
+    // a metric that buys a lower rate pays for it once, and the rate pays back on every step.
+    const double lookahead = coupled ? s.horizon - st.t0 : dt;
+    auto size_of = [&](const MetricSolution& sol) {
+      return enclosure_radius({sol.Q, sol.S, sol.P}, radius_for(sol) * std::exp(sol.c * lookahead));
+    };
+
     MetricSdpSettings sdp = s.sdp;
-    double q_floor = att_dep ? s.attitude_floor_ratio * lambda_min(Q) : s.sdp.q_floor;
+    sdp.coupled = coupled;
+    sdp.rigorous = s.rigour == Rigour::rigorous;
+    double q_floor = (att_dep && !coupled) ? s.attitude_floor_ratio * lambda_min(M.Q) : s.sdp.q_floor;
     Choice ch;
     TubeResult lmi_tube;
     for (int pass = 0; pass < 2; ++pass) {
       Deviation z_lmi = z_state;
-      if (!loop.omega_flow_affine()) z_lmi.head<4>() = ball.head<4>();
-      if (att_dep) z_lmi(4) = r / std::sqrt(q_floor);
+      if (coupled) {
+        // The flowed curves: at step 0 the straight curves in the initial set (its state tube);
+        // later the M_i-geodesics from the centre, inside B_{M_i}(x_i, r_i) (coupled fact 4).
+        if (i > 0) z_lmi = ball;
+      } else {
+        if (!loop.omega_flow_affine()) z_lmi.head<4>() = ball.head<4>();
+        if (att_dep) z_lmi(4) = r / std::sqrt(q_floor);
+      }
       lmi_tube = (z_lmi == z_state) ? state_tube : propagate_tube(loop, span, z_lmi);
       const LmiEnclosure enc = loop.lmi_enclosure(lmi_tube.attitude_hull, lmi_tube.omega_hull);
       sdp.q_floor = q_floor;
-      ch = choose_metric(enc, Q, P, r, dt, s, sdp);
+      const double c_prev = res.steps.empty() ? 0.0 : res.steps.back().c;
+      try {
+        ch = choose_metric(enc, M, s, sdp, size_of, res.steps.empty() ? nullptr : &c_prev);
+      } catch (const VerificationFailure& e) {
+        std::ostringstream os;
+        os << "reach: step " << i << " on [" << st.t0 << ", " << st.t1 << "] s cannot be proved: "
+           << e.what();
+        throw VerificationFailure(os.str());
+      }
       st.lmi_exact = enc.exact;
       st.lmi_rho = enc.rho;
       const double lq = lambda_min(ch.sol.Q);
-      if (!att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
+      if (coupled || !att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
       if (pass == 1) throw NumericalError("ConReach: attitude enclosure of the metric ball is inconsistent");
       q_floor = lq * (1.0 - 1e-9);  // fallback metric below the floor: redo U_i with its λ_min
     }
@@ -210,33 +328,40 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
     st.c_identity = ch.c_identity;
     st.c = ch.sol.c;
     st.Q = ch.sol.Q;
+    st.S = ch.sol.S;
     st.P = ch.sol.P;
     st.fallback = ch.fallback;
+    st.proved_rigorously = ch.sol.proved;
     st.sdp_solves = ch.solves;
     st.trials = ch.trials;
     res.sdp_solves += ch.solves;
+    if (recover) {
+      r = radius_for(ch.sol);
+      res.r0 = r;
+      res.Q0 = st.Q;
+      res.S0 = st.S;
+      res.P0 = st.P;
+    }
 
     const std::size_t k1 = static_cast<std::size_t>((i + 1) * m);
     // The ball's centre is the computed nominal point; the exact trajectory from the previous
-    // centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in G_{Q×P} within
-    // √(λ_max(Q) e_R² + λ_max(P) e_ω²) (docs/reach.md, "Nominal error bound").
+    // centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in M within
+    // metric_cover_radius(M, e_R, e_ω) (docs/reach.md, "Nominal error bound").
     const Deviation& e = state_tube.nominal_error;
     st.nominal_error_R = e(4);
     st.nominal_error_omega = e(3);
-    st.numerical_allowance =
-        std::sqrt(lambda_max(st.Q) * e(4) * e(4) + lambda_max(st.P) * e(3) * e(3)) * (1.0 + 1e-12);
+    st.numerical_allowance = metric_cover_radius(st.metric(), e(4), e(3)) * (1.0 + 1e-12);
     st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
     st.R = res.nominal[k1].R;
     st.omega = res.nominal[k1].omega;
-    st.attitude_radius = attitude_enclosure_radius(st.Q, st.r);
-    st.omega_half_widths = p_ball_half_widths(st.P, st.r);
-    if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite()) {
+    st.attitude_radius = attitude_enclosure_radius(attitude_schur(st.metric()), st.r);
+    st.omega_half_widths = p_ball_half_widths(omega_schur(st.metric()), st.r);
+    if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite() || !st.S.allFinite()) {
       std::ostringstream os;
       os << "ConReach: non-finite ball at t = " << st.t1 << " s";
       throw NumericalError(os.str());
     }
-    Q = st.Q;
-    P = st.P;
+    M = st.metric();
     r = st.r;
     res.steps.push_back(std::move(st));
   }

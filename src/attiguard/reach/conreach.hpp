@@ -33,7 +33,21 @@ enum class RateMode {
   min_enclosure,  ///< the (c, Q, P) giving the smallest bi-invariant enclosure radius
 };
 
+/// The metric family of the balls (docs/reach.md, "Coupled metrics").
+enum class MetricKind {
+  product,  ///< G_Q × G_P (the paper, Def. 2): S = 0
+  coupled,  ///< M = [[Q, S], [Sᵀ, P]]: attitude–ω coupling, contracting for damped loops
+};
+
+/// How each step's metric is certified (docs/reach.md, "Rigour").
+enum class Rigour {
+  rigorous,  ///< interval proof of the LMI, M ≻ 0 and M ⪯ M_i (lmi_proof.hpp); unprovable: cannot_prove
+  floating,  ///< double-precision eigenvalue certification only ("float", for speed comparisons)
+};
+
 struct ConReachSettings {
+  MetricKind metric{MetricKind::product};
+  Rigour rigour{Rigour::rigorous};
   double horizon{4.0};            ///< T [s]
   int steps{40};                  ///< N
   RateMode mode{RateMode::line_search};
@@ -68,17 +82,20 @@ struct ReachStep {
   double c{0.0};                  ///< c_{i+1}
   Mat3 Q{Mat3::Identity()};       ///< Q_{i+1}
   Mat3 P{Mat3::Identity()};       ///< P_{i+1}
+  Mat3 S{Mat3::Zero()};           ///< S_{i+1} (coupled metric; 0 for the product metric)
   double r{0.0};                  ///< r_{i+1}
   Mat3 R{Mat3::Identity()};       ///< nominal R_{i+1}
   Vec3 omega{Vec3::Zero()};       ///< nominal ω_{i+1}
-  double attitude_radius{0.0};    ///< r_{i+1}/√λ_min(Q_{i+1}): bi-invariant attitude enclosure
-  Vec3 omega_half_widths{Vec3::Zero()};  ///< half-widths of the box around the P-ball
+  double attitude_radius{0.0};    ///< r_{i+1}/√λ_min(Q − SP⁻¹Sᵀ): bi-invariant attitude enclosure
+  Vec3 omega_half_widths{Vec3::Zero()};  ///< half-widths of the box around the ball's ω projection
   double numerical_allowance{0.0};  ///< added to r: the nominal's error bound in G_{Q×P}
   double nominal_error_R{0.0};      ///< bound on d(R*(t_{i+1}), R_{i+1}) (nominal's error)
   double nominal_error_omega{0.0};  ///< bound on ‖ω*(t_{i+1}) − ω_{i+1}‖
   bool lmi_exact{false};
   double lmi_rho{0.0};
   bool fallback{false};           ///< no SDP accepted: Q = P = sI at c_max
+  bool proved_rigorously{false};  ///< the step's metric was proved in interval arithmetic
+  [[nodiscard]] StateMetric metric() const { return {Q, S, P}; }
   int sdp_solves{0};
   std::vector<RateTrial> trials;
 };
@@ -87,6 +104,7 @@ struct ReachResult {
   InitialSet initial;
   Mat3 Q0{Mat3::Identity()};
   Mat3 P0{Mat3::Identity()};
+  Mat3 S0{Mat3::Zero()};  ///< coupled metric: the initial ball is B_{M_1}((R0, ω0), r0)
   double r0{0.0};
   std::vector<ReachStep> steps;
   std::vector<NominalPoint> nominal;  ///< at every sub-step boundary
@@ -95,7 +113,8 @@ struct ReachResult {
 };
 
 /// Runs ConReach. Throws InputError for invalid settings, NumericalError for numerical failure
-/// (NaN, diverging tube or nominal).
+/// (NaN, diverging tube or nominal), and VerificationFailure ("cannot be proved rigorously",
+/// naming the step) when in rigorous mode no metric of a step can be proved.
 [[nodiscard]] ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
                                        const ConReachSettings& settings);
 

@@ -22,10 +22,34 @@ Mat3 sym_basis(int k) {
   return E;
 }
 
-Mat3 sym_from(const Eigen::VectorXd& y, int offset) {
-  Mat3 S = Mat3::Zero();
-  for (int k = 0; k < 6; ++k) S += y(offset + k) * sym_basis(k);
-  return S;
+/// The metric variables of the SDP as 6×6 basis matrices: Q's six, P's six, and (coupled) S's
+/// nine entries [[0, e_a e_bᵀ], [e_b e_aᵀ, 0]].
+std::vector<Mat6> metric_basis(bool coupled) {
+  std::vector<Mat6> out;
+  for (int part = 0; part < 2; ++part) {
+    for (int k = 0; k < 6; ++k) {
+      Mat6 E = Mat6::Zero();
+      E.block<3, 3>(3 * part, 3 * part) = sym_basis(k);
+      out.push_back(E);
+    }
+  }
+  if (coupled) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        Mat6 E = Mat6::Zero();
+        E(a, 3 + b) = 1.0;
+        E(3 + b, a) = 1.0;
+        out.push_back(E);
+      }
+    }
+  }
+  return out;
+}
+
+StateMetric metric_from(const Eigen::VectorXd& y, const std::vector<Mat6>& basis) {
+  Mat6 M = Mat6::Zero();
+  for (std::size_t k = 0; k < basis.size(); ++k) M += y(static_cast<int>(k)) * basis[k];
+  return {M.topLeftCorner<3, 3>(), M.topRightCorner<3, 3>(), M.bottomRightCorner<3, 3>()};
 }
 
 double max_eig(const Eigen::MatrixXd& S) {
@@ -33,91 +57,141 @@ double max_eig(const Eigen::MatrixXd& S) {
   return es.eigenvalues()(es.eigenvalues().size() - 1);
 }
 
+double min_eig(const Mat6& S) { return -max_eig(-S); }
+
 /// Largest generalised eigenvalue of X relative to the SPD matrix Y (λ_max(L⁻¹XL⁻ᵀ), Y = LLᵀ).
-double relative_max_eig(const Mat3& X, const Mat3& Y) {
-  const Eigen::LLT<Mat3> llt(Y);
-  const Mat3 Linv = llt.matrixL().solve(Mat3::Identity());
-  return lambda_max(Linv * X * Linv.transpose());
+double relative_max_eig(const Mat6& X, const Mat6& Y) {
+  const Eigen::LLT<Mat6> llt(Y);
+  const Mat6 Linv = llt.matrixL().solve(Mat6::Identity());
+  return max_eig(Linv * X * Linv.transpose());
 }
 
-/// Certifies (Q, P, μ, c) against the enclosure and the previous metric; see the header.
-MetricSolution certify(const LmiEnclosure& enc, const Mat3& Q_prev, const Mat3& P_prev, Mat3 Q,
-                       Mat3 P, std::vector<double> mu, double c) {
+/// Relative eigenvalue of M against M_prev; block by block for two product metrics (the
+/// product metric's own formulas, kept bit for bit).
+double relative_metric_eig(const StateMetric& m, const StateMetric& prev) {
+  if (m.S.isZero(0.0) && prev.S.isZero(0.0)) {
+    auto rel3 = [](const Mat3& X, const Mat3& Y) {
+      const Eigen::LLT<Mat3> llt(Y);
+      const Mat3 Linv = llt.matrixL().solve(Mat3::Identity());
+      return lambda_max(Linv * X * Linv.transpose());
+    };
+    return std::max(rel3(m.Q, prev.Q), rel3(m.P, prev.P));
+  }
+  return relative_max_eig(metric_matrix(m), metric_matrix(prev));
+}
+
+/// λ_min(M_prev − M) (block by block for two product metrics).
+double gap_to_prev(const StateMetric& m, const StateMetric& prev) {
+  if (m.S.isZero(0.0) && prev.S.isZero(0.0)) {
+    return std::min(lambda_min(prev.Q - m.Q), lambda_min(prev.P - m.P));
+  }
+  return min_eig(metric_matrix(prev) - metric_matrix(m));
+}
+
+/// λ_min(M) (min(λ_min Q, λ_min P) for a product metric).
+double metric_min_eig(const StateMetric& m) {
+  if (m.S.isZero(0.0)) return std::min(lambda_min(m.Q), lambda_min(m.P));
+  return min_eig(metric_matrix(m));
+}
+
+/// M ≻ 0 and M ≺ M_prev proved in interval arithmetic (3×3 blocks for two product metrics).
+bool prove_metric(const StateMetric& m, const StateMetric& prev) {
+  if (m.S.isZero(0.0) && prev.S.isZero(0.0)) {
+    return prove_less(Mat3(-m.Q), Mat3::Zero()).proved && prove_less(Mat3(-m.P), Mat3::Zero()).proved &&
+           prove_less(m.Q, prev.Q).proved && prove_less(m.P, prev.P).proved;
+  }
+  const Mat6 M = metric_matrix(m);
+  return prove_less(Mat6(-M), Mat6::Zero()).proved && prove_less(M, metric_matrix(prev)).proved;
+}
+
+void scale(StateMetric& m, std::vector<double>& mu, double s) {
+  m.Q *= s;
+  m.S *= s;
+  m.P *= s;
+  for (double& x : mu) x *= s;
+}
+
+/// Certifies (M, μ, c) against the enclosure and the previous metric; see the header.
+MetricSolution certify(const LmiEnclosure& enc, const StateMetric& prev, StateMetric m,
+                       std::vector<double> mu, double c, bool rigorous) {
   MetricSolution sol;
   sol.c_requested = c;
-  Q = 0.5 * (Q + Q.transpose());
-  P = 0.5 * (P + P.transpose());
-  if (!Q.allFinite() || !P.allFinite() || !(lambda_min(Q) > 0.0) || !(lambda_min(P) > 0.0)) {
+  m.Q = 0.5 * (m.Q + m.Q.transpose());
+  m.P = 0.5 * (m.P + m.P.transpose());
+  if (!m.Q.allFinite() || !m.P.allFinite() || !m.S.allFinite() || !(lambda_min(m.Q) > 0.0) ||
+      !(lambda_min(m.P) > 0.0) || !(min_eig(metric_matrix(m)) > 0.0)) {
     sol.message = "metric not positive definite";
     return sol;
   }
   for (int pass = 0; pass < 4; ++pass) {
-    const double lq = relative_max_eig(Q, Q_prev);
-    const double lp = relative_max_eig(P, P_prev);
-    const double l = std::max(lq, lp);
-    if (l <= 1.0 && lambda_min(Q_prev - Q) >= 0.0 && lambda_min(P_prev - P) >= 0.0) break;
-    const double s = (1.0 - 1e-12 * (1 << (2 * pass))) / std::max(l, 1.0);
-    Q *= s;
-    P *= s;
-    for (double& m : mu) m *= s;
+    const double l = relative_metric_eig(m, prev);
+    if (l <= 1.0 && gap_to_prev(m, prev) >= 0.0) break;
+    scale(m, mu, (1.0 - 1e-12 * (1 << (2 * pass))) / std::max(l, 1.0));
     sol.scaled = true;
   }
-  if (lambda_min(Q_prev - Q) < 0.0 || lambda_min(P_prev - P) < 0.0) {
-    sol.message = "cannot keep Q <= Q_prev, P <= P_prev";
+  if (gap_to_prev(m, prev) < 0.0) {
+    sol.message = "cannot keep M <= M_prev";
     return sol;
   }
-  double worst = lmi_worst_eigenvalue(enc, Q, P, c, mu);
+  double worst = lmi_worst_eigenvalue(enc, m, c, mu);
   if (!std::isfinite(worst)) {
     sol.message = "robust multiplier not positive";
     return sol;
   }
-  const double lmin = std::min(lambda_min(Q), lambda_min(P));
+  const double lmin = metric_min_eig(m);
   constexpr double kMargin = 1e-12;
   if (worst > -kMargin) {
     c += (worst + 2.0 * kMargin) / (2.0 * lmin);
-    worst = lmi_worst_eigenvalue(enc, Q, P, c, mu);
+    worst = lmi_worst_eigenvalue(enc, m, c, mu);
   }
   if (!(worst <= 0.0)) {
     sol.message = "LMI re-check failed";
     return sol;
   }
-  // The proof in outward-rounded interval arithmetic (lmi_proof.hpp): Q, P ≻ 0, Q ≺ Q_prev,
-  // P ≺ P_prev and the LMI at every vertex. A failed monotonicity proof (Q = Q_prev to rounding)
-  // scales (Q, P, μ) down, a failed LMI proof raises c; both keep what was proved before.
+  // The proof in outward-rounded interval arithmetic (lmi_proof.hpp): M ≻ 0, M ≺ M_prev and the
+  // LMI at every vertex. A failed monotonicity proof (M = M_prev to rounding) scales (M, μ)
+  // down, a failed LMI proof raises c; both keep what was proved before.
   bool proved = false;
-  for (int attempt = 0; attempt < 6 && !proved; ++attempt) {
-    const bool metric_ok = prove_less(-Q, Mat3::Zero()).proved && prove_less(-P, Mat3::Zero()).proved &&
-                           prove_less(Q, Q_prev).proved && prove_less(P, P_prev).proved;
-    if (!metric_ok) {
-      const double s = 1.0 - 1e-12 * std::ldexp(1.0, 2 * attempt);
-      Q *= s;
-      P *= s;
-      for (double& m : mu) m *= s;
+  for (int attempt = 0; attempt < 6 && !proved && rigorous; ++attempt) {
+    if (!prove_metric(m, prev)) {
+      scale(m, mu, 1.0 - 1e-12 * std::ldexp(1.0, 2 * attempt));
       sol.scaled = true;
       continue;
     }
-    const NegativeDefiniteProof lmi = prove_contraction_lmi(enc, Q, P, c, mu);
+    const NegativeDefiniteProof lmi = prove_contraction_lmi(enc, m, c, mu);
     if (lmi.proved) {
       proved = true;
       break;
     }
     const double excess = std::isfinite(lmi.margin) ? std::max(lmi.margin, 0.0) : 0.0;
-    c += (excess + kMargin * std::ldexp(1.0, 2 * attempt)) / (2.0 * std::min(lambda_min(Q), lambda_min(P)));
+    c += (excess + kMargin * std::ldexp(1.0, 2 * attempt)) / (2.0 * metric_min_eig(m));
   }
-  if (!proved) {
+  if (rigorous && !proved) {
     sol.message = "LMI or metric bounds not proved in interval arithmetic";
     return sol;
   }
-  worst = lmi_worst_eigenvalue(enc, Q, P, c, mu);
+  sol.proved = proved;
+  worst = lmi_worst_eigenvalue(enc, m, c, mu);
   sol.ok = true;
   sol.c = c;
-  sol.Q = Q;
-  sol.P = P;
+  sol.Q = m.Q;
+  sol.S = m.S;
+  sol.P = m.P;
+  sol.mu = mu;
   sol.worst_eigenvalue = worst;
   return sol;
 }
 
 }  // namespace
+
+Mat6 contraction_lmi(const Mat6& M, const Mat3& A, const Mat3& B, const Vec3& omega, double c) {
+  Mat6 F = Mat6::Zero();
+  F.topLeftCorner<3, 3>() = -lie::hat(omega);
+  F.topRightCorner<3, 3>() = Mat3::Identity();
+  F.bottomLeftCorner<3, 3>() = A;
+  F.bottomRightCorner<3, 3>() = B;
+  return M * F + F.transpose() * M - 2.0 * c * M;
+}
 
 Mat6 contraction_lmi(const Mat3& Q, const Mat3& P, const Mat3& A, const Mat3& B, const Vec3& omega,
                      double c) {
@@ -130,22 +204,29 @@ Mat6 contraction_lmi(const Mat3& Q, const Mat3& P, const Mat3& A, const Mat3& B,
   return M;
 }
 
-double lmi_worst_eigenvalue(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, double c,
+double lmi_worst_eigenvalue(const LmiEnclosure& enc, const StateMetric& m, double c,
                             const std::vector<double>& mu) {
   double worst = -std::numeric_limits<double>::infinity();
-  Eigen::Matrix<double, 6, 3> U = Eigen::Matrix<double, 6, 3>::Zero();
-  U.bottomRows<3>() = P;
+  const Mat6 M = metric_matrix(m);
+  const Eigen::Matrix<double, 6, 3> U = M.rightCols<3>();
+  const bool product = m.S.isZero(0.0);
   for (std::size_t v = 0; v < enc.vertices.size(); ++v) {
     const LmiVertex& vx = enc.vertices[v];
-    Mat6 S = contraction_lmi(Q, P, vx.A, vx.B, vx.omega, c);
+    Mat6 S = product ? contraction_lmi(m.Q, m.P, vx.A, vx.B, vx.omega, c)
+                     : contraction_lmi(M, vx.A, vx.B, vx.omega, c);
     if (enc.rho > 0.0) {
-      const double m = v < mu.size() ? mu[v] : 0.0;
-      if (!(m > 0.0)) return std::numeric_limits<double>::infinity();
-      S += m * enc.rho * enc.rho * Mat6::Identity() + (U * U.transpose()) / m;
+      const double mv = v < mu.size() ? mu[v] : 0.0;
+      if (!(mv > 0.0)) return std::numeric_limits<double>::infinity();
+      S += mv * enc.rho * enc.rho * Mat6::Identity() + (U * U.transpose()) / mv;
     }
     worst = std::max(worst, max_eig(S));
   }
   return worst;
+}
+
+double lmi_worst_eigenvalue(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P, double c,
+                            const std::vector<double>& mu) {
+  return lmi_worst_eigenvalue(enc, StateMetric{Q, Mat3::Zero(), P}, c, mu);
 }
 
 double identity_metric_rate(const LmiEnclosure& enc) {
@@ -157,43 +238,83 @@ double identity_metric_rate(const LmiEnclosure& enc) {
   return c;
 }
 
-MetricSolution fallback_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const Mat3& P_prev) {
-  const double s = std::min(lambda_min(Q_prev), lambda_min(P_prev)) * (1.0 - 1e-12);
+MetricSolution fallback_metric(const LmiEnclosure& enc, const StateMetric& prev, bool rigorous) {
+  const double s = metric_min_eig(prev) * (1.0 - 1e-12);
   const std::vector<double> mu(enc.vertices.size(), enc.rho > 0.0 ? s / enc.rho : 0.0);
-  MetricSolution sol = certify(enc, Q_prev, P_prev, s * Mat3::Identity(), s * Mat3::Identity(), mu,
-                               identity_metric_rate(enc));
+  MetricSolution sol = certify(enc, prev, {s * Mat3::Identity(), Mat3::Zero(), s * Mat3::Identity()},
+                               mu, identity_metric_rate(enc), rigorous);
   sol.status = SdpStatus::failed;
-  sol.message = "fallback Q = P = s I at the identity-metric rate";
+  sol.message = sol.ok ? "fallback Q = P = s I at the identity-metric rate"
+                       : "fallback Q = P = s I at the identity-metric rate: " + sol.message;
   return sol;
+}
+
+MetricSolution fallback_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const Mat3& P_prev) {
+  return fallback_metric(enc, StateMetric{Q_prev, Mat3::Zero(), P_prev}, true);
 }
 
 MetricSolution solve_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const Mat3& P_prev,
                             double c, MetricObjective objective, const MetricSdpSettings& settings) {
+  MetricSdpSettings product = settings;
+  product.coupled = false;
+  return solve_metric(enc, StateMetric{Q_prev, Mat3::Zero(), P_prev}, c, objective, product);
+}
+
+MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                            MetricObjective objective, const MetricSdpSettings& settings) {
+  const bool coupled = settings.coupled;
+  const std::vector<Mat6> basis = metric_basis(coupled);
+  const int nm = static_cast<int>(basis.size());
   const int nv = static_cast<int>(enc.vertices.size());
   const bool robust = enc.rho > 0.0;
   const bool enclosure = objective == MetricObjective::max_min_eigenvalue;
-  const int mu0 = 12;
+  const int mu0 = nm;
   const int t_var = mu0 + (robust ? nv : 0);
   const int nvar = t_var + (enclosure ? 1 : 0);
   LmiProblem prob(nvar);
 
-  // Q_floor I ⪯ Q ⪯ Q_prev, P_floor I ⪯ P ⪯ P_prev (and tI ⪯ Q, tI ⪯ P).
-  for (int part = 0; part < 2; ++part) {
-    const int off = part == 0 ? 0 : 6;
-    const double floor = part == 0 ? settings.q_floor : settings.p_floor;
-    const Mat3& prev = part == 0 ? Q_prev : P_prev;
-    const int lo = prob.add_block(3);
-    const int hi = prob.add_block(3);
-    prob.add_constant(lo, -floor * Eigen::MatrixXd::Identity(3, 3));
-    prob.add_constant(hi, prev);
-    for (int k = 0; k < 6; ++k) {
-      prob.add_term(lo, off + k, sym_basis(k));
-      prob.add_term(hi, off + k, -sym_basis(k));
+  if (!coupled) {
+    // Q_floor I ⪯ Q ⪯ Q_prev, P_floor I ⪯ P ⪯ P_prev (and tI ⪯ Q, tI ⪯ P).
+    for (int part = 0; part < 2; ++part) {
+      const int off = part == 0 ? 0 : 6;
+      const double floor = part == 0 ? settings.q_floor : settings.p_floor;
+      const Mat3& pm = part == 0 ? prev.Q : prev.P;
+      const int lo = prob.add_block(3);
+      const int hi = prob.add_block(3);
+      prob.add_constant(lo, -floor * Eigen::MatrixXd::Identity(3, 3));
+      prob.add_constant(hi, pm);
+      for (int k = 0; k < 6; ++k) {
+        prob.add_term(lo, off + k, sym_basis(k));
+        prob.add_term(hi, off + k, -sym_basis(k));
+      }
+      if (enclosure) {
+        const int tb = prob.add_block(3);
+        for (int k = 0; k < 6; ++k) prob.add_term(tb, off + k, sym_basis(k));
+        prob.add_term(tb, t_var, -Eigen::MatrixXd::Identity(3, 3));
+      }
+    }
+  } else {
+    // diag(Q_floor I, P_floor I) ⪯ M ⪯ M_prev; tI ⪯ Q − SP⁻¹Sᵀ ⟺ M − diag(tI, 0) ⪰ 0, and
+    // tI ⪯ P − SᵀQ⁻¹S ⟺ M − diag(0, tI) ⪰ 0 (Schur complements, P ≻ 0 and Q ≻ 0).
+    Mat6 floor = Mat6::Zero();
+    floor.topLeftCorner<3, 3>() = settings.q_floor * Mat3::Identity();
+    floor.bottomRightCorner<3, 3>() = settings.p_floor * Mat3::Identity();
+    const int lo = prob.add_block(6);
+    const int hi = prob.add_block(6);
+    prob.add_constant(lo, -floor);
+    prob.add_constant(hi, metric_matrix(prev));
+    for (int k = 0; k < nm; ++k) {
+      prob.add_term(lo, k, basis[static_cast<std::size_t>(k)]);
+      prob.add_term(hi, k, -basis[static_cast<std::size_t>(k)]);
     }
     if (enclosure) {
-      const int tb = prob.add_block(3);
-      for (int k = 0; k < 6; ++k) prob.add_term(tb, off + k, sym_basis(k));
-      prob.add_term(tb, t_var, -Eigen::MatrixXd::Identity(3, 3));
+      for (int part = 0; part < 2; ++part) {
+        const int tb = prob.add_block(6);
+        for (int k = 0; k < nm; ++k) prob.add_term(tb, k, basis[static_cast<std::size_t>(k)]);
+        Eigen::MatrixXd T = Eigen::MatrixXd::Zero(6, 6);
+        T.block(3 * part, 3 * part, 3, 3) = -Eigen::MatrixXd::Identity(3, 3);
+        prob.add_term(tb, t_var, T);
+      }
     }
   }
   // The contraction LMI at every vertex.
@@ -202,17 +323,15 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const M
     const LmiVertex& vx = enc.vertices[static_cast<std::size_t>(v)];
     const int b = prob.add_block(n);
     prob.add_constant(b, -settings.strictness * Eigen::MatrixXd::Identity(n, n));
-    for (int k = 0; k < 6; ++k) {
-      Eigen::MatrixXd Fq = Eigen::MatrixXd::Zero(n, n);
-      Fq.topLeftCorner(6, 6) = -contraction_lmi(sym_basis(k), Mat3::Zero(), vx.A, vx.B, vx.omega, c);
-      prob.add_term(b, k, Fq);
-      Eigen::MatrixXd Fp = Eigen::MatrixXd::Zero(n, n);
-      Fp.topLeftCorner(6, 6) = -contraction_lmi(Mat3::Zero(), sym_basis(k), vx.A, vx.B, vx.omega, c);
+    for (int k = 0; k < nm; ++k) {
+      const Mat6& E = basis[static_cast<std::size_t>(k)];
+      Eigen::MatrixXd Fk = Eigen::MatrixXd::Zero(n, n);
+      Fk.topLeftCorner(6, 6) = -contraction_lmi(E, vx.A, vx.B, vx.omega, c);
       if (robust) {
-        Fp.block(3, 6, 3, 3) = -sym_basis(k);
-        Fp.block(6, 3, 3, 3) = -sym_basis(k);
+        Fk.block(0, 6, 6, 3) = -E.rightCols<3>();
+        Fk.block(6, 0, 3, 6) = -E.rightCols<3>().transpose();
       }
-      prob.add_term(b, 6 + k, Fp);
+      prob.add_term(b, k, Fk);
     }
     if (robust) {
       Eigen::MatrixXd Fm = Eigen::MatrixXd::Zero(n, n);
@@ -243,7 +362,7 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const M
   if (robust) {
     for (int v = 0; v < nv; ++v) mu.push_back(res.y(mu0 + v));
   }
-  MetricSolution sol = certify(enc, Q_prev, P_prev, sym_from(res.y, 0), sym_from(res.y, 6), mu, c);
+  MetricSolution sol = certify(enc, prev, metric_from(res.y, basis), mu, c, settings.rigorous);
   sol.status = sol.ok ? SdpStatus::solved : SdpStatus::failed;
   if (sol.ok) sol.message = res.message;
   return sol;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/scalar_interval.hpp"
 
 namespace attiguard::reach {
@@ -92,59 +93,64 @@ IMat<3> add(const IMat<3>& A, const IMat<3>& B, double sign = 1.0) {
   return out;
 }
 
-IMat<3> scaled(const IMat<3>& A, const Interval& s) {
-  IMat<3> out;
-  for (std::size_t i = 0; i < 3; ++i) {
-    for (std::size_t j = 0; j < 3; ++j) out[i][j] = s * A[i][j];
-  }
-  return out;
-}
-
 }  // namespace
 
-NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P,
+NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const StateMetric& metric,
                                             double c, const std::vector<double>& mu) {
   NegativeDefiniteProof worst{true, -HUGE_VAL};
-  const IMat<3> Qi = imat(Q);
-  const IMat<3> Pi = imat(P);
-  const IMat<3> Qt = transposed<3>(Qi);
-  const IMat<3> Pt = transposed<3>(Pi);
+  const IMat<6> M = point<6>(metric_matrix(metric));
+  const IMat<6> Mt = transposed<6>(M);
   const Interval two_c = Interval(2.0) * Interval(c);
   for (std::size_t v = 0; v < enc.vertices.size(); ++v) {
     const LmiVertex& vx = enc.vertices[v];
-    const IMat<3> W = imat(lie::hat(vx.omega));
-    const IMat<3> A = imat(vx.A);
-    const IMat<3> B = imat(vx.B);
-    // M = [[ω̂Q − Qω̂ − 2cQ, Q + AᵀP], [Q + PA, BᵀP + PB − 2cP]] (contraction_sdp.hpp).
-    const IMat<3> m11 = add(add(product<3>(W, Qi), product<3>(Qi, W), -1.0), scaled(Qi, two_c), -1.0);
-    const IMat<3> m12 = add(Qi, product<3>(transposed<3>(A), Pi));
-    const IMat<3> m21 = add(Qt, product<3>(Pt, A));
-    IMat<3> m22 = add(add(product<3>(transposed<3>(B), Pi), product<3>(Pt, B)), scaled(Pi, two_c), -1.0);
+    // L = MF + FᵀM − 2cM with F = [[−ω̂, I], [A, B]] (contraction_sdp.hpp); the entries of F are
+    // the floating-point numbers of the vertex, so F is a point matrix.
+    Mat6 Fd = Mat6::Zero();
+    Fd.topLeftCorner<3, 3>() = -lie::hat(vx.omega);
+    Fd.topRightCorner<3, 3>() = Mat3::Identity();
+    Fd.bottomLeftCorner<3, 3>() = vx.A;
+    Fd.bottomRightCorner<3, 3>() = vx.B;
+    const IMat<6> F = point<6>(Fd);
+    const IMat<6> MF = product<6>(M, F);
+    const IMat<6> FtM = product<6>(transposed<6>(F), Mt);
     IMat<6> S;
-    Interval shift(0.0);
+    for (std::size_t i = 0; i < 6; ++i) {
+      for (std::size_t j = 0; j < 6; ++j) S[i][j] = MF[i][j] + FtM[i][j] - two_c * M[i][j];
+    }
     if (enc.rho > 0.0) {
+      // + μρ²I + UUᵀ/μ, U = M[0; I] (the last three columns of M).
       const double m = v < mu.size() ? mu[v] : 0.0;
       if (!(m > 0.0) || !std::isfinite(m)) return {false, HUGE_VAL};
-      shift = Interval(m) * Interval(enc.rho) * Interval(enc.rho);
-      const IMat<3> PPt = product<3>(Pi, Pt);
-      for (std::size_t i = 0; i < 3; ++i) {
-        for (std::size_t j = 0; j < 3; ++j) m22[i][j] += PPt[i][j] / m;
+      const Interval shift = Interval(m) * Interval(enc.rho) * Interval(enc.rho);
+      for (std::size_t i = 0; i < 6; ++i) {
+        for (std::size_t j = 0; j < 6; ++j) {
+          Interval uu(0.0);
+          for (std::size_t k = 3; k < 6; ++k) uu += M[i][k] * M[j][k];
+          S[i][j] += uu / m;
+        }
+        S[i][i] += shift;
       }
     }
-    for (std::size_t i = 0; i < 3; ++i) {
-      for (std::size_t j = 0; j < 3; ++j) {
-        S[i][j] = m11[i][j];
-        S[i][j + 3] = m12[i][j];
-        S[i + 3][j] = m21[i][j];
-        S[i + 3][j + 3] = m22[i][j];
-      }
-    }
-    for (std::size_t i = 0; i < 6; ++i) S[i][i] += shift;
     const NegativeDefiniteProof p = prove_negative_definite<6>(S);
     worst.proved = worst.proved && p.proved;
     worst.margin = std::max(worst.margin, p.proved ? p.margin : HUGE_VAL);
   }
   return worst;
+}
+
+NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const Mat3& Q, const Mat3& P,
+                                            double c, const std::vector<double>& mu) {
+  return prove_contraction_lmi(enc, StateMetric{Q, Mat3::Zero(), P}, c, mu);
+}
+
+NegativeDefiniteProof prove_less(const Mat6& A, const Mat6& B) {
+  IMat<6> D;
+  const IMat<6> Ai = point<6>(A);
+  const IMat<6> Bi = point<6>(B);
+  for (std::size_t i = 0; i < 6; ++i) {
+    for (std::size_t j = 0; j < 6; ++j) D[i][j] = Ai[i][j] - Bi[i][j];
+  }
+  return prove_negative_definite<6>(D);
 }
 
 NegativeDefiniteProof prove_less(const Mat3& A, const Mat3& B) {

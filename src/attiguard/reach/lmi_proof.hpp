@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "attiguard/reach/closed_loop.hpp"
+#include "attiguard/reach/metrics.hpp"
 
 namespace attiguard::reach {
 
@@ -23,14 +24,21 @@ struct NegativeDefiniteProof {
   double margin{0.0};
 };
 
-/// Proves λ_max(M(Q, P; A_v, B_v, ω_v, c) + μ_v ρ² I + UUᵀ/μ_v) < 0 at every vertex (the robust
-/// form of contraction_sdp.hpp; μ ignored when ρ = 0), with Q, P, c, μ taken as the exact
-/// values of their floating-point numbers. `margin` is the worst vertex's.
+/// Proves λ_max(MF_v + F_vᵀM − 2cM + μ_v ρ² I + UUᵀ/μ_v) < 0 at every vertex, U = M[0; I] (the
+/// robust form of contraction_sdp.hpp for the coupled metric M = [[Q, S], [Sᵀ, P]]; μ ignored
+/// when ρ = 0), with M, c, μ and the vertex data taken as the exact values of their
+/// floating-point numbers. `margin` is the worst vertex's.
+[[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc,
+                                                          const StateMetric& metric, double c,
+                                                          const std::vector<double>& mu);
+/// The product-metric case S = 0 (LMI (10)).
 [[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const Mat3& Q,
                                                           const Mat3& P, double c,
                                                           const std::vector<double>& mu);
 
 /// Proves A − B ≺ 0 for symmetric 3×3 A, B (B = 0: A ≺ 0).
 [[nodiscard]] NegativeDefiniteProof prove_less(const Mat3& A, const Mat3& B);
+/// Proves A − B ≺ 0 for symmetric 6×6 A, B (the coupled metric: M ≻ 0, M ≺ M_prev).
+[[nodiscard]] NegativeDefiniteProof prove_less(const Mat6& A, const Mat6& B);
 
 }  // namespace attiguard::reach

@@ -22,6 +22,31 @@ struct ProductMetric {
   Mat3 P{Mat3::Identity()};
 };
 
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+/// The coupled left-invariant metric M = [[Q, S], [Sᵀ, P]] on SO(3) × R³ (docs/reach.md,
+/// "Coupled metrics"): ⟨(α, β), (α, β)⟩ = zᵀMz for the body-trivialised tangent z = (α, β),
+/// α = (RᵀṘ)^∨, β = ω̇. S = 0 is the product metric G_Q × G_P (Def. 2).
+struct StateMetric {
+  Mat3 Q{Mat3::Identity()};
+  Mat3 S{Mat3::Zero()};
+  Mat3 P{Mat3::Identity()};
+};
+
+/// M = [[Q, S], [Sᵀ, P]].
+[[nodiscard]] Mat6 metric_matrix(const StateMetric& m);
+/// Q − S P⁻¹ Sᵀ: B_M((R, ω), r) projects into B_{Q−SP⁻¹Sᵀ}(R, r) (docs/reach.md, coupled fact 3).
+[[nodiscard]] Mat3 attitude_schur(const StateMetric& m);
+/// P − Sᵀ Q⁻¹ S: B_M((R, ω), r) projects into {ω' : ‖ω' − ω‖_{P−SᵀQ⁻¹S} ≤ r} (coupled fact 2).
+[[nodiscard]] Mat3 omega_schur(const StateMetric& m);
+/// Upper bound √(zᵀMz), z = (log(R1ᵀR2)^∨, ω2 − ω1), on d_M (coupled fact 1).
+[[nodiscard]] double metric_distance_upper(const StateMetric& m, const Mat3& R1, const Vec3& w1,
+                                           const Mat3& R2, const Vec3& w2);
+/// Bound on sup √(zᵀMz) over ‖z_R‖ ≤ a, ‖z_ω‖ ≤ b: the smaller of √(λ_max(Q)a² + 2‖S‖₂ab +
+/// λ_max(P)b²) and (S ≠ 0) min over θ = k/40 of √λ_max(D_θ M D_θ), D_θ = diag(a/√θ, b/√(1−θ))
+/// (the radius of an M-ball around (R0, ω0) covering B_I(R0, a) × B(ω0, b), coupled fact 1).
+[[nodiscard]] double metric_cover_radius(const StateMetric& m, double a, double b);
+
 /// Smallest / largest eigenvalue of the symmetric part of M.
 [[nodiscard]] double lambda_min(const Mat3& M);
 [[nodiscard]] double lambda_max(const Mat3& M);

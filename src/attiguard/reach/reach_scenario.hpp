@@ -20,6 +20,14 @@ namespace attiguard::reach {
 inline constexpr NameTable<RateMode, 2> kRateModeNames{
     {{{RateMode::line_search, "line_search"}, {RateMode::min_enclosure, "min_enclosure"}}}};
 
+/// Names of MetricKind in scenario files and reach.json (docs/reach.md, "Coupled metrics").
+inline constexpr NameTable<MetricKind, 2> kMetricNames{
+    {{{MetricKind::product, "product"}, {MetricKind::coupled, "coupled"}}}};
+
+/// Names of Rigour in scenario files and reach.json (docs/reach.md, "Rigour").
+inline constexpr NameTable<Rigour, 2> kRigourNames{
+    {{{Rigour::rigorous, "rigorous"}, {Rigour::floating, "float"}}}};
+
 /// Everything a `reach` run needs, validated.
 struct ReachScenario {
   std::string name;

@@ -46,11 +46,11 @@ json step_json(const ReachStep& s) {
   for (const RateTrial& t : s.trials) trials.push_back({t.c, t.feasible, t.enclosure_radius});
   return {{"i", s.index}, {"t0", s.t0}, {"t1", s.t1}, {"wbox", box(s.omega_box)},
           {"abox", ball(s.attitude_box)}, {"tube", tube}, {"c_id", s.c_identity}, {"c", s.c},
-          {"Q", dense(s.Q)}, {"P", dense(s.P)}, {"r", s.r}, {"R", dense(s.R)}, {"w", dense(s.omega)},
+          {"Q", dense(s.Q)}, {"S", dense(s.S)}, {"P", dense(s.P)}, {"r", s.r}, {"R", dense(s.R)}, {"w", dense(s.omega)},
           {"ar", s.attitude_radius}, {"whw", dense(s.omega_half_widths)},
           {"na", s.numerical_allowance}, {"neR", s.nominal_error_R}, {"new", s.nominal_error_omega},
           {"exact", s.lmi_exact}, {"rho", s.lmi_rho},
-          {"fb", s.fallback}, {"solves", s.sdp_solves}, {"trials", trials}};
+          {"fb", s.fallback}, {"pr", s.proved_rigorously}, {"solves", s.sdp_solves}, {"trials", trials}};
 }
 
 ReachStep step_from(const json& j) {
@@ -72,6 +72,7 @@ ReachStep step_from(const json& j) {
   s.c = j.at("c").get<double>();
   dense(j.at("Q"), s.Q);
   dense(j.at("P"), s.P);
+  dense(j.at("S"), s.S);
   s.r = j.at("r").get<double>();
   dense(j.at("R"), s.R);
   dense(j.at("w"), s.omega);
@@ -82,6 +83,7 @@ ReachStep step_from(const json& j) {
   s.nominal_error_omega = j.at("new").get<double>();
   s.lmi_exact = j.at("exact").get<bool>();
   s.lmi_rho = j.at("rho").get<double>();
+  s.proved_rigorously = j.at("pr").get<bool>();
   s.fallback = j.at("fb").get<bool>();
   s.sdp_solves = j.at("solves").get<int>();
   for (const json& t : j.at("trials")) {
@@ -99,7 +101,7 @@ std::string encode_result(const ReachResult& r) {
   for (const NominalPoint& p : r.nominal) nominal.push_back({p.t, dense(p.R), dense(p.omega)});
   const InitialSet& in = r.initial;
   const json j = {{"init", {dense(in.R0), in.attitude_radius, dense(in.omega0), in.omega_radius, dense(in.P0)}},
-                  {"Q0", dense(r.Q0)}, {"P0", dense(r.P0)}, {"r0", r.r0}, {"steps", steps},
+                  {"Q0", dense(r.Q0)}, {"S0", dense(r.S0)}, {"P0", dense(r.P0)}, {"r0", r.r0}, {"steps", steps},
                   {"nominal", nominal}, {"solves", r.sdp_solves}, {"wall", r.wall_time_s}};
   const std::vector<std::uint8_t> bytes = json::to_cbor(j);
   return {bytes.begin(), bytes.end()};
@@ -117,6 +119,7 @@ ReachResult decode_result(const std::string& bytes) {
     dense(in.at(4), r.initial.P0);
     dense(j.at("Q0"), r.Q0);
     dense(j.at("P0"), r.P0);
+    dense(j.at("S0"), r.S0);
     r.r0 = j.at("r0").get<double>();
     for (const json& s : j.at("steps")) r.steps.push_back(step_from(s));
     for (const json& p : j.at("nominal")) {

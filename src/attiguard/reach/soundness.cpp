@@ -100,10 +100,10 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
       const std::size_t i = k / m;
       double ratio;
       if (i == 0) {
-        ratio = product_distance_upper({res.Q0, res.P0}, res.nominal[0].R, res.nominal[0].omega, Rk, wk) / res.r0;
+        ratio = metric_distance_upper({res.Q0, res.S0, res.P0}, res.nominal[0].R, res.nominal[0].omega, Rk, wk) / res.r0;
       } else {
         const ReachStep& st = res.steps[i - 1];
-        ratio = product_distance_upper({st.Q, st.P}, st.R, st.omega, Rk, wk) / st.r;
+        ratio = metric_distance_upper(st.metric(), st.R, st.omega, Rk, wk) / st.r;
       }
       if (!(ratio <= 1.0 + kRoundoff) && violation < 0.0) violation = times[k];
       worst = std::max(worst, std::isfinite(ratio) ? ratio : 1e300);

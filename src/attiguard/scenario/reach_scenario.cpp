@@ -64,10 +64,18 @@ reach::ReachScenario parse_reach(const Document& doc) {
   reach::ConReachSettings& s = sc.settings;
   const TableReader r = root.table("reach");
   declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
-              "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates"});
+              "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates",
+              "metric", "rigour"});
   s.horizon = r.number("horizon", NumberRule::positive());
   s.steps = static_cast<int>(r.integer("steps", 1, 100000));
   s.mode = enum_or(r, "rate_mode", reach::kRateModeNames, reach::RateMode::line_search);
+  // Default (docs/reach.md, "Coupled metrics"): coupled where the closed loop feeds the
+  // attitude back (its LMI depends on R: the R–ω coupling is what makes it contract), the
+  // paper's product metric otherwise.
+  s.metric = enum_or(r, "metric", reach::kMetricNames,
+                     sc.loop->lmi_depends_on_attitude() ? reach::MetricKind::coupled
+                                                        : reach::MetricKind::product);
+  s.rigour = enum_or(r, "rigour", reach::kRigourNames, reach::Rigour::rigorous);
   s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
   s.min_diagonal = r.number_or("min_diagonal", 0.01, NumberRule::non_negative());

@@ -15,6 +15,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "attiguard/campaign/aggregation.hpp"
@@ -25,6 +27,7 @@
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
 
@@ -84,6 +87,13 @@ void campaign_command(const CampaignArguments& args) {
   if (args.threads < 1) throw InputError("--threads: must be at least 1");
   if (!args.replay && args.runs < 1) throw InputError("--runs: must be at least 1");
   if (args.replay && *args.replay < 0) throw InputError("--replay: must be a run index >= 0");
+  if (const double most = scenario::limit_value(scenario::WorkLimit::campaign_runs);
+      !args.replay && static_cast<double>(args.runs) > most) {
+    throw InputError("--runs: " + std::to_string(args.runs) + " runs are more than the limit " +
+                     CLI::detail::to_string(most) +
+                     " (the run list and runs.csv grow with N: a campaign that size does not "
+                     "finish or fit); use fewer runs, or raise the limit with --max-runs N");
+  }
   make_dir(args.out_dir);
   const std::filesystem::path scratch =
       args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));

@@ -14,6 +14,7 @@
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
 
 namespace attiguard::cli {
@@ -108,7 +109,13 @@ void run_command(const RunArguments& args) {
 
   app::RunOptions options;
   options.out_dir = args.out_dir;
-  const nlohmann::json summary = handler.run(doc, options);
+  const nlohmann::json summary = [&] {
+    try {
+      return handler.run(doc, options);
+    } catch (const NumericalError& e) {  // name the key most likely responsible (app/failure.hpp)
+      throw NumericalError(app::located_numerical_failure(e.what(), doc));
+    }
+  }();
   print_summary(summary, args.scenario.string(), handler.name);
 
   std::vector<std::filesystem::path> written;

@@ -303,6 +303,87 @@ TEST(CliContract, HugeInertiaIsAnInputError) {
             std::string::npos) << r.err;
 }
 
+// A failed run says so beside its partial rows: summary.json.partial holds status "partial",
+// the exit code and the error.
+TEST(CliContract, FailedRunWritesAPartialStatus) {
+  const fs::path dir = scratch_dir();
+  std::string stiff = read_file(example("rigid_body_pd.toml"));
+  stiff.replace(stiff.find("inertia = [1.0, 2.0, 3.0]"), 25, "inertia = [1e-3, 1e3, 1e3]");
+  stiff.replace(stiff.find("step = 0.01"), 11, "step = 0.05");
+  write_file(dir / "stiff.toml", stiff);
+  ASSERT_EQ(run_cli(dir, "run stiff.toml --out o").exit_code, 3);
+  const std::string status = read_file(dir / "o/summary.json.partial");
+  EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
+  EXPECT_NE(status.find("\"exit_code\": 3"), std::string::npos) << status;
+  EXPECT_NE(status.find("non-finite state"), std::string::npos) << status;
+  EXPECT_TRUE(fs::exists(dir / "o/trajectory.csv.partial"));
+  EXPECT_FALSE(fs::exists(dir / "o/summary.json"));
+}
+
+// A reach analysis that fails numerically (the enclosure diverges) leaves reach.json.partial
+// with its status instead of nothing.
+TEST(CliContract, FailedReachWritesAPartialReachJson) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("conreach_hold_too_large.toml"));
+  text.replace(text.find("attitude_radius = 0.08"), 22, "attitude_radius = 0.15");
+  text.replace(text.find("omega_radius = 0.08"), 19, "omega_radius = 0.15");
+  write_file(dir / "wide.toml", text);
+  const auto r = run_cli(dir, "reach wide.toml --out o");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  expect_one_error_line(r);
+  EXPECT_FALSE(fs::exists(dir / "o/reach.json"));
+  const std::string status = read_file(dir / "o/reach.json.partial");
+  EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
+  EXPECT_NE(status.find("no a priori enclosure"), std::string::npos) << status;
+}
+
+// SIGINT and SIGTERM in the middle of a run leave trajectory.csv.partial (its rows so far) and
+// no trajectory.csv or summary.json that would look complete.
+TEST(CliContract, InterruptedRunLeavesOnlyAPartialFile) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("pet_erg_paper.toml"));
+  text.replace(text.find("step = 0.01"), 11, "step = 1e-4");          // 10^7 steps: ~15 s
+  text.replace(text.find("duration = 60.0"), 15, "duration = 1000.0");
+  text.replace(text.find("output_interval = 0.01"), 22, "output_interval = 0.1");
+  write_file(dir / "long.toml", text);
+  for (const char* sig : {"INT", "TERM"}) {
+    SCOPED_TRACE(sig);
+    const fs::path out = dir / (std::string("out_") + sig);
+    // env --default-signal: a background job of a non-interactive shell ignores SIGINT.
+    const std::string script = "cd " + quoted(dir.string()) + " && env --default-signal=INT " +
+                               quoted(ATTIGUARD_CLI_PATH) + " run long.toml --out " +
+                               quoted(out.string()) + " >/dev/null 2>&1 & p=$!; while [ ! -s " +
+                               quoted((out / "trajectory.csv.partial").string()) +
+                               " ]; do sleep 0.05; done; kill -" + sig + " $p; wait $p";
+    const int status = std::system(("sh -c " + quoted(script)).c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + (std::string(sig) == "INT" ? 2 : 15));
+    EXPECT_TRUE(fs::exists(out / "trajectory.csv.partial"));
+    EXPECT_EQ(read_file(out / "trajectory.csv.partial").rfind("t,", 0), 0u);
+    EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
+}
+
+// Re-using an output folder for another kind removes the earlier run's figures (recorded in
+// plots.txt), so none is left beside the new summary.
+TEST(CliContract, EarlierPlotsAreRemovedByTheNextRun) {
+  const fs::path dir = scratch_dir();
+  const auto first = run_cli(dir, "run " + quoted(example("rigid_body_pd.toml").string()) + " --out o --plot");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  if (first.err.find("no plots:") != std::string::npos) GTEST_SKIP() << first.err;
+  ASSERT_TRUE(fs::exists(dir / "o/attitude_error.png"));
+  write_file(dir / "o/mine.png", "not attiguard's");
+  const auto second = run_cli(dir, "run " + quoted(example("pet_erg_paper.toml").string()) + " --out o");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  for (const char* png : {"attitude_error.png", "angular_velocity.png", "torque.png",
+                          "quaternion.png", "energy_momentum.png"}) {
+    EXPECT_FALSE(fs::exists(dir / "o" / png)) << png;
+  }
+  EXPECT_FALSE(fs::exists(dir / "o/plots.txt"));
+  EXPECT_TRUE(fs::exists(dir / "o/mine.png"));  // not written by attiguard: kept
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

@@ -10,7 +10,6 @@
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
-#include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::app {
 
@@ -36,7 +35,7 @@ std::string approx(double x) {
 std::string at_key(const scenario::Document& doc, std::string_view table, std::string_view key,
                    const std::string& message) {
   try {
-    scenario::TableReader(doc).table(table).fail(key, message);
+    scenario::fail_in_table(doc, table, key, message);
   } catch (const InputError& e) {
     return e.what();
   }

@@ -27,6 +27,7 @@
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/output_records.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
@@ -59,6 +60,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
+  io::remove_recorded_plots(dir);
   const app::RunRecord r = app::run_one(c, k, options);
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
@@ -76,6 +78,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   }
   if (args.plot && r.status == app::RunStatus::ok) {
     const PlotOutcome p = plot_results(std::string(c.handler->name), dir);
+    io::record_plots(dir, p.written);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
   }
 }
@@ -126,6 +129,7 @@ void campaign_command(const CampaignArguments& args) {
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {
     if (!args.resume) std::filesystem::remove(runs_path);
+    io::remove_recorded_plots(args.out_dir);
     write_identity(identity_path, identity);
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
@@ -191,6 +195,7 @@ void campaign_command(const CampaignArguments& args) {
             << (args.out_dir / "campaign.json").string() << '\n';
   if (args.plot) {
     const PlotOutcome p = plot_results("campaign", args.out_dir);
+    io::record_plots(args.out_dir, p.written);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
     if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
   }

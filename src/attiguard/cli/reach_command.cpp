@@ -13,6 +13,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/reach_run.hpp"
+#include "attiguard/io/output_records.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 
@@ -28,10 +29,17 @@ void reach_command(const ReachArguments& args) {
   // rethrowing.
   const parallel::World world = parallel::mpi_world();
   nlohmann::json summary;
+  if (world.root()) io::remove_recorded_plots(args.out_dir);
   try {
     summary = app::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
-    if (args.plot && world.root()) (void)plot_results("reach", args.out_dir);
+    if (args.plot && world.root()) io::record_plots(args.out_dir, plot_results("reach", args.out_dir).written);
+    throw;
+  } catch (const Error& e) {  // no reach.json: reach.json.partial says why
+    if (world.root()) {
+      io::write_failure_status(args.out_dir, "reach.json", "reach", args.scenario.string(),
+                               static_cast<int>(e.code()), e.what());
+    }
     throw;
   }
   if (!world.root()) return;
@@ -51,6 +59,7 @@ void reach_command(const ReachArguments& args) {
   std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << '\n';
   if (args.plot) {
     const PlotOutcome plots = plot_results("reach", args.out_dir);
+    io::record_plots(args.out_dir, plots.written);
     for (const auto& p : plots.written) std::cout << "  " << p.string() << '\n';
     if (plots.skipped_because) std::cerr << "attiguard: warning: no plots: " << *plots.skipped_because << '\n';
   }

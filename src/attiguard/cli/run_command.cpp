@@ -16,6 +16,7 @@
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/io/output_records.hpp"
 
 namespace attiguard::cli {
 namespace {
@@ -109,11 +110,22 @@ void run_command(const RunArguments& args) {
 
   app::RunOptions options;
   options.out_dir = args.out_dir;
+  io::remove_recorded_plots(args.out_dir);  // an earlier run's figures, maybe of another kind
   const nlohmann::json summary = [&] {
+    // A failure leaves summary.json.partial saying so beside trajectory.csv.partial.
+    const auto mark_partial = [&](const Error& e) {
+      io::write_failure_status(args.out_dir, "summary.json", std::string(handler.name),
+                               args.scenario.string(), static_cast<int>(e.code()), e.what());
+    };
     try {
       return handler.run(doc, options);
     } catch (const NumericalError& e) {  // name the key most likely responsible (app/failure.hpp)
-      throw NumericalError(app::located_numerical_failure(e.what(), doc));
+      const NumericalError located(app::located_numerical_failure(e.what(), doc));
+      mark_partial(located);
+      throw located;
+    } catch (const Error& e) {
+      mark_partial(e);
+      throw;
     }
   }();
   print_summary(summary, args.scenario.string(), handler.name);
@@ -128,6 +140,7 @@ void run_command(const RunArguments& args) {
   std::string no_plots;
   if (args.plot) {
     PlotOutcome plots = plot_results(std::string(handler.name), args.out_dir);
+    io::record_plots(args.out_dir, plots.written);
     written.insert(written.end(), plots.written.begin(), plots.written.end());
     if (plots.skipped_because) no_plots = *plots.skipped_because;
   }

@@ -263,8 +263,10 @@ Eigen::Vector3d TableReader::direction(std::string_view key) const {
   // Scaled by the largest component first, so that [1e300, 1e300, 0] or [1e-300, 0, 0] (whose
   // norm over- or underflows) are the directions they name.
   const Eigen::Vector3d raw = vector3(key);
+  const double raw_norm = raw.norm();
   const double scale = raw.cwiseAbs().maxCoeff();
-  const Eigen::Vector3d v = scale > 0.0 ? Eigen::Vector3d(raw / scale) : raw;
+  const bool representable = std::isfinite(raw_norm) && raw_norm >= 1e-150;
+  const Eigen::Vector3d v = representable || !(scale > 0.0) ? raw : Eigen::Vector3d(raw / scale);
   const double norm = v.norm();
   if (!(norm > 0.0) || !std::isfinite(norm)) {
     fail(key, "must be a non-zero direction, got [" + format_number(v.x()) + ", " +

@@ -384,6 +384,30 @@ TEST(CliContract, EarlierPlotsAreRemovedByTheNextRun) {
   EXPECT_TRUE(fs::exists(dir / "o/mine.png"));  // not written by attiguard: kept
 }
 
+// Each output folder records the resolved scenario: the file with every default its readers
+// used filled in; running it again gives the same results.
+TEST(CliContract, RunWritesTheResolvedScenarioThatReproducesIt) {
+  const fs::path dir = scratch_dir();
+  for (const char* name : {"rigid_body_pd.toml", "pet_erg_paper.toml"}) {
+    SCOPED_TRACE(name);
+    const auto first = run_cli(dir, "run " + quoted(example(name).string()) + " --out a");
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_NE(first.out.find("a/scenario.resolved.toml"), std::string::npos) << first.out;
+    const std::string resolved = read_file(dir / "a/scenario.resolved.toml");
+    EXPECT_NE(resolved.find("abs_tol = "), std::string::npos) << resolved;  // a default
+    EXPECT_NE(resolved.find("max_step = 0.0"), std::string::npos) << resolved;
+    ASSERT_EQ(run_cli(dir, "run a/scenario.resolved.toml --out b").exit_code, 0);
+    auto without_wall_time = [](std::string s) {
+      const auto at = s.find("\"wall_time_s\"");
+      if (at != std::string::npos) s.erase(at, s.find('\n', at) - at);
+      return s;
+    };
+    EXPECT_EQ(without_wall_time(read_file(dir / "a/summary.json")),
+              without_wall_time(read_file(dir / "b/summary.json")));
+    EXPECT_EQ(read_file(dir / "a/trajectory.csv"), read_file(dir / "b/trajectory.csv"));
+  }
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

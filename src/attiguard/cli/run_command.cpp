@@ -14,6 +14,7 @@
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
 #include "attiguard/io/output_records.hpp"
@@ -111,6 +112,8 @@ void run_command(const RunArguments& args) {
   app::RunOptions options;
   options.out_dir = args.out_dir;
   io::remove_recorded_plots(args.out_dir);  // an earlier run's figures, maybe of another kind
+  // What this run is computed from, every default filled in (scenario/resolved_scenario.hpp).
+  io::write_text(args.out_dir, "scenario.resolved.toml", scenario::resolve_scenario(doc, handler.check));
   const nlohmann::json summary = [&] {
     // A failure leaves summary.json.partial saying so beside trajectory.csv.partial.
     const auto mark_partial = [&](const Error& e) {
@@ -131,7 +134,7 @@ void run_command(const RunArguments& args) {
   print_summary(summary, args.scenario.string(), handler.name);
 
   std::vector<std::filesystem::path> written;
-  for (const char* file : {"trajectory.csv", "summary.json"}) {
+  for (const char* file : {"trajectory.csv", "summary.json", "scenario.resolved.toml"}) {
     const auto path = args.out_dir / file;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) written.push_back(path);

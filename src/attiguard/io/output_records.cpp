@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/core/errors.hpp"
 #include "attiguard/io/partial_file.hpp"
 
 namespace attiguard::io {
@@ -45,6 +46,16 @@ void write_failure_status(const std::filesystem::path& dir, const std::string& n
     out << status.dump(2) << '\n';
   } catch (...) {
   }
+}
+
+void write_text(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+  {
+    std::ofstream out(partial_path(dir / name), std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw InputError("cannot write " + (dir / name).string() + ": write failed");
+  }
+  commit_partial(dir / name);
 }
 
 }  // namespace attiguard::io

@@ -26,4 +26,8 @@ void write_failure_status(const std::filesystem::path& dir, const std::string& n
                           const std::string& kind, const std::string& scenario, int exit_code,
                           const std::string& error) noexcept;
 
+/// Writes `text` to DIR/NAME (through NAME.partial, renamed when complete); throws InputError
+/// "cannot write FILE: reason" on failure.
+void write_text(const std::filesystem::path& dir, const std::string& name, const std::string& text);
+
 }  // namespace attiguard::io

@@ -3,6 +3,7 @@
 // Rotations and inertia matrices are in rotation_value.cpp and inertia_value.cpp.
 
 #include "attiguard/scenario/table_reader.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -181,7 +182,11 @@ double TableReader::number(std::string_view key, const NumberRule& rule) const {
 
 double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule) const {
   const toml::node* n = take(key);
-  return n == nullptr ? fallback : read_number(shared_->file, *n, key_path(key), rule);
+  if (n == nullptr) {
+    DefaultsRecorder::record(key_path(key), fallback);
+    return fallback;
+  }
+  return read_number(shared_->file, *n, key_path(key), rule);
 }
 
 long TableReader::integer(std::string_view key, long min, long max) const {
@@ -203,12 +208,17 @@ long TableReader::integer(std::string_view key, long min, long max) const {
 }
 
 long TableReader::integer_or(std::string_view key, long fallback, long min, long max) const {
-  return take(key) == nullptr ? fallback : integer(key, min, max);
+  if (take(key) == nullptr) {
+    DefaultsRecorder::record(key_path(key), static_cast<std::int64_t>(fallback));
+    return fallback;
+  }
+  return integer(key, min, max);
 }
 
 bool TableReader::boolean_or(std::string_view key, bool fallback) const {
   const toml::node* n = take(key);
   if (n == nullptr) {
+    DefaultsRecorder::record(key_path(key), fallback);
     return fallback;
   }
   const auto* b = n->as_boolean();
@@ -247,7 +257,11 @@ std::string TableReader::string(std::string_view key,
 
 std::string TableReader::string_or(std::string_view key, std::string_view fallback,
                                    std::span<const std::string_view> allowed) const {
-  return take(key) == nullptr ? std::string(fallback) : string(key, allowed);
+  if (take(key) == nullptr) {
+    DefaultsRecorder::record(key_path(key), std::string(fallback));
+    return std::string(fallback);
+  }
+  return string(key, allowed);
 }
 
 Eigen::Vector3d TableReader::vector3(std::string_view key) const {

@@ -32,9 +32,10 @@ std::string resolved_toml(const Document& doc,
                           const std::vector<std::pair<std::string, DefaultValue>>& defaults) {
   Document resolved = doc;
   toml::table& root = root_table(resolved);
-  for (const auto& [path, value] : defaults) {
+  for (const auto& entry : defaults) {
+    const std::string& path = entry.first;  // a plain reference: lambdas capture it in C++20
     if (resolve_key_path(root, path) != nullptr) continue;  // present (read twice): keep it
-    std::visit([&](const auto& v) { assign_key_path(root, path, v); }, value);
+    std::visit([&](const auto& v) { assign_key_path(root, path, v); }, entry.second);
   }
   std::ostringstream out;
   out << "# " << doc.path.string() << " resolved by attiguard " << version_string

@@ -34,7 +34,7 @@ void reach_command(const ReachArguments& args) {
   if (world.root()) {
     io::remove_recorded_plots(args.out_dir);
     io::ensure_directory(args.out_dir);
-    io::write_text(args.out_dir, "scenario.resolved.toml",
+    io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
                    scenario::resolve_scenario(doc, [](const scenario::Document& d) { (void)scenario::parse_reach(d); }));
   }
   try {
@@ -64,7 +64,7 @@ void reach_command(const ReachArguments& args) {
             << summary["soundness"]["samples"].get<long>() << " sampled trajectories inside\n";
   std::cout << "  verdict: " << summary["verdict"].get<std::string>() << '\n';
   std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << "\n  "
-            << (args.out_dir / "scenario.resolved.toml").string() << '\n';
+            << (args.out_dir / scenario::kResolvedScenarioFile).string() << '\n';
   if (args.plot) {
     const PlotOutcome plots = plot_results("reach", args.out_dir);
     io::record_plots(args.out_dir, plots.written);

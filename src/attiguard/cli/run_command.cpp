@@ -113,7 +113,7 @@ void run_command(const RunArguments& args) {
   options.out_dir = args.out_dir;
   io::remove_recorded_plots(args.out_dir);  // an earlier run's figures, maybe of another kind
   // What this run is computed from, every default filled in (scenario/resolved_scenario.hpp).
-  io::write_text(args.out_dir, "scenario.resolved.toml", scenario::resolve_scenario(doc, handler.check));
+  io::write_text(args.out_dir, scenario::kResolvedScenarioFile, scenario::resolve_scenario(doc, handler.check));
   const nlohmann::json summary = [&] {
     // A failure leaves summary.json.partial saying so beside trajectory.csv.partial.
     const auto mark_partial = [&](const Error& e) {
@@ -134,7 +134,7 @@ void run_command(const RunArguments& args) {
   print_summary(summary, args.scenario.string(), handler.name);
 
   std::vector<std::filesystem::path> written;
-  for (const char* file : {"trajectory.csv", "summary.json", "scenario.resolved.toml"}) {
+  for (const char* file : {"trajectory.csv", "summary.json", scenario::kResolvedScenarioFile}) {
     const auto path = args.out_dir / file;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) written.push_back(path);

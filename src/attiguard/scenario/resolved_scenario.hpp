@@ -15,6 +15,9 @@
 
 namespace attiguard::scenario {
 
+/// The name of the resolved scenario in an output folder.
+inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.toml";
+
 /// A default value a reader used for an absent key.
 using DefaultValue = std::variant<double, std::int64_t, bool, std::string>;
 

@@ -2,17 +2,25 @@
 /// The PET-ERG flight-loop object (PET-ERG paper, eqs. (3)-(6)), its cones (2b), the PD law (3)
 /// and the rigid body (Euler's equation), step-able from Python.
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <optional>
+#include <utility>
+
+#include <nlohmann/json.hpp>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/scenario/argument_checks.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -22,39 +30,127 @@ namespace {
 
 using governor::AttitudeGovernor;
 using governor::ConeConstraint;
-using governor::GovernorMode;
 using governor::GovernorOutput;
 using governor::GovernorParams;
 using lie::Mat3;
 using lie::Vec3;
 
-/// The mode named `name` in governor::kGovernorModeNames (the scenario files' names).
-GovernorMode mode_of(const std::string& name) {
-  if (const auto mode = governor::kGovernorModeNames.find(name)) return *mode;
-  std::string known;
-  for (const std::string_view n : governor::kGovernorModeNames.names()) {
-    known += (known.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+/// The JSON of a 3×3 matrix (rows) and a 3-vector, for the argument checks.
+nlohmann::json rows_of(const Mat3& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({M(r, 0), M(r, 1), M(r, 2)});
+  return rows;
+}
+nlohmann::json vector_of(const Vec3& v) { return {v(0), v(1), v(2)}; }
+
+/// A cone from keyword arguments, validated by the file reader's cone check
+/// (scenario/argument_checks.hpp): exactly one of half_angle_deg and half_angle_rad.
+ConeConstraint make_cone(bool keep_out, const Vec3& axis_b, const Vec3& direction_i,
+                         const std::optional<double>& half_angle_deg,
+                         const std::optional<double>& half_angle_rad, double delta_offset,
+                         double zeta_offset, double repulsive_gain) {
+  const std::string label = keep_out ? "keep_out_cone()" : "keep_in_cone()";
+  if (half_angle_deg.has_value() == half_angle_rad.has_value()) {
+    throw InputError(label + ": give exactly one of half_angle_deg (degrees) and half_angle_rad "
+                             "(radians)" + (half_angle_deg ? ", not both" : ""));
   }
-  throw std::invalid_argument("governor mode must be one of " + known + ", got \"" + name + "\"");
+  nlohmann::json cone = {{"type", keep_out ? "keep_out" : "keep_in"},
+                         {"axis_b", vector_of(axis_b)},
+                         {"direction_i", vector_of(direction_i)},
+                         {"delta_offset", delta_offset},
+                         {"zeta_offset", zeta_offset},
+                         {"repulsive_gain", repulsive_gain}};
+  if (half_angle_deg) cone["half_angle_deg"] = *half_angle_deg;
+  if (half_angle_rad) cone["half_angle"] = *half_angle_rad;
+  try {
+    return scenario::checked_cone(cone, label);
+  } catch (const InputError& e) {  // the argument names of Python: cone.half_angle -> half_angle_rad
+    std::string m = e.what();
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"cone.half_angle:", "half_angle_rad:"},
+                                   {"cone.", ""}, {"half_angle is in radians", "half_angle_rad is in radians"}}) {
+      for (auto at = m.find(from); at != std::string::npos; at = m.find(from, at + to.size())) {
+        m.replace(at, from.size(), to);
+      }
+    }
+    throw InputError(m);
+  }
 }
 
-/// Governor built from keyword arguments (the keys of a pet_erg scenario's [control]/[erg]).
-AttitudeGovernor make_governor(const Mat3& J, double kp, double kd, double tau_max,
+/// The scenario key paths of a Governor's arguments -> the argument names.
+std::string with_argument_names(std::string m) {
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"erg.sampling_period", "Ts"},
+                                 {"control.", ""}, {"erg.", ""}, {": inertia:", ": J:"},
+                                 {": governor:", ": mode:"}}) {
+    for (auto at = m.find(from); at != std::string::npos; at = m.find(from, at + to.size())) {
+      m.replace(at, from.size(), to);
+    }
+  }
+  return m;
+}
+
+/// A Governor for Python: the flight-loop object plus the checks of its calls (reset before
+/// step, time never backwards, rotations and finite vectors: scenario/argument_checks.hpp).
+/// Set-up code, not the flight loop: the checks allocate.
+class PyGovernor {
+ public:
+  PyGovernor(const Mat3& J, double kp, double kd, double tau_max,
+             const std::vector<ConeConstraint>& cones, const std::string& mode, double kappa,
+             double c_gamma, double Ts, double epsilon, double epsilon_gamma)
+      : gov_(make(J, kp, kd, tau_max, cones, mode, kappa, c_gamma, Ts, epsilon, epsilon_gamma)) {}
+
+  void reset(double t0, const Mat3& R_g0) {
+    if (!std::isfinite(t0)) throw InputError(std::string(kLabelReset) + ": t0: must be finite");
+    gov_.reset(t0, scenario::checked_rotation_matrix(R_g0, "R_g0", kLabelReset));
+    last_t_ = t0;
+    started_ = true;
+  }
+
+  GovernorOutput step(double t, const Mat3& R, const Vec3& omega_b, const Mat3& R_d) {
+    if (!started_) {
+      throw InputError(std::string(kLabelStep) + ": call reset(t0, R_g0) before the first step()");
+    }
+    if (!std::isfinite(t)) throw InputError(std::string(kLabelStep) + ": t: must be finite");
+    if (t < last_t_) {
+      std::array<char, 96> buf{};
+      std::snprintf(buf.data(), buf.size(), "%.17g s < %.17g s", t, last_t_);
+      throw InputError(std::string(kLabelStep) + ": t: time went backwards (t = " + buf.data() +
+                       " of the previous call)");
+    }
+    const Mat3 R_ok = scenario::checked_rotation_matrix(R, "R", kLabelStep);
+    const Vec3 w_ok = scenario::checked_vector3(omega_b, "omega_b", kLabelStep);
+    const Mat3 R_d_ok = scenario::checked_rotation_matrix(R_d, "R_d", kLabelStep);
+    last_t_ = t;
+    return gov_.step(t, R_ok, w_ok, R_d_ok);
+  }
+
+  [[nodiscard]] const AttitudeGovernor& governor() const noexcept { return gov_; }
+
+ private:
+  static constexpr const char* kLabelReset = "Governor.reset()";
+  static constexpr const char* kLabelStep = "Governor.step()";
+
+  static AttitudeGovernor make(const Mat3& J, double kp, double kd, double tau_max,
                                const std::vector<ConeConstraint>& cones, const std::string& mode,
                                double kappa, double c_gamma, double Ts, double epsilon,
                                double epsilon_gamma) {
-  GovernorParams p;
-  p.mode = mode_of(mode);
-  p.gains = control::PdGains{kp, kd};
-  p.J = J;
-  p.tau_max = tau_max;
-  p.kappa = kappa;
-  p.c_gamma = c_gamma;
-  p.Ts = Ts;
-  p.epsilon = epsilon;
-  p.epsilon_gamma = epsilon_gamma;
-  return AttitudeGovernor(p, cones);
-}
+    const nlohmann::json args = {
+        {"governor", mode},
+        {"inertia", rows_of(J)},
+        {"control", {{"kp", kp}, {"kd", kd}, {"tau_max", tau_max}}},
+        {"erg", {{"kappa", kappa}, {"c_gamma", c_gamma}, {"sampling_period", Ts},
+                 {"epsilon", epsilon}, {"epsilon_gamma", epsilon_gamma}}}};
+    try {
+      const GovernorParams p = scenario::checked_governor_params(args, "Governor()");
+      return scenario::checked_governor(p, cones, "Governor()");
+    } catch (const InputError& e) {
+      throw InputError(with_argument_names(e.what()));
+    }
+  }
+
+  AttitudeGovernor gov_;
+  bool started_{false};
+  double last_t_{0.0};
+};
 
 std::vector<double> margins_of(const GovernorOutput& o) {
   return std::vector<double>(o.margins.begin(), o.margins.begin() + o.cone_count);
@@ -74,17 +170,25 @@ void bind_governor(py::module_& m) {
         return "Cone(theta_c=" + std::to_string(c.theta_c) + ")";
       });
   m.def("keep_in_cone",
-        [](const Vec3& a_b, const Vec3& a_i, double theta_c, double delta_offset, double zeta_offset,
-           double gain) { return governor::keep_in_cone(a_b, a_i, theta_c, delta_offset, zeta_offset, gain); },
-        py::arg("axis_b"), py::arg("direction_i"), py::arg("theta_c"), py::arg("delta_offset") = 0.05,
+        [](const Vec3& a_b, const Vec3& a_i, std::optional<double> deg, std::optional<double> rad,
+           double delta_offset, double zeta_offset, double gain) {
+          return make_cone(false, a_b, a_i, deg, rad, delta_offset, zeta_offset, gain);
+        },
+        py::arg("axis_b"), py::arg("direction_i"), py::kw_only(), py::arg("half_angle_deg") = py::none(),
+        py::arg("half_angle_rad") = py::none(), py::arg("delta_offset") = 0.05,
         py::arg("zeta_offset") = 0.05, py::arg("repulsive_gain") = 1.0,
-        "Keep-in cone (2b) of half-angle θ_c [rad] around direction_i (PET-ERG paper).");
+        "Keep-in cone (2b) of half-angle θ_c around direction_i (PET-ERG paper): exactly one of "
+        "half_angle_deg, half_angle_rad; checked as a [[cones]] table of a scenario file.");
   m.def("keep_out_cone",
-        [](const Vec3& a_b, const Vec3& avoid_i, double alpha, double delta_offset, double zeta_offset,
-           double gain) { return governor::keep_out_cone(a_b, avoid_i, alpha, delta_offset, zeta_offset, gain); },
-        py::arg("axis_b"), py::arg("avoid_i"), py::arg("half_angle"), py::arg("delta_offset") = 0.05,
+        [](const Vec3& a_b, const Vec3& avoid_i, std::optional<double> deg, std::optional<double> rad,
+           double delta_offset, double zeta_offset, double gain) {
+          return make_cone(true, a_b, avoid_i, deg, rad, delta_offset, zeta_offset, gain);
+        },
+        py::arg("axis_b"), py::arg("direction_i"), py::kw_only(), py::arg("half_angle_deg") = py::none(),
+        py::arg("half_angle_rad") = py::none(), py::arg("delta_offset") = 0.05,
         py::arg("zeta_offset") = 0.05, py::arg("repulsive_gain") = 1.0,
-        "Keep-out cone of half-angle α [rad] around avoid_i, as the keep-in cone (2b) of π − α.");
+        "Keep-out cone of half-angle α around direction_i, as the keep-in cone (2b) of π − α: "
+        "exactly one of half_angle_deg, half_angle_rad; checked as a [[cones]] table.");
 
   m.def("pd_torque",
         [](const Mat3& R, const Vec3& w, const Mat3& R_g, double kp, double kd) {
@@ -114,29 +218,41 @@ void bind_governor(py::module_& m) {
       .def_property_readonly("margins", &margins_of)
       .def_property_readonly("min_margin", &GovernorOutput::min_margin);
 
-  py::class_<AttitudeGovernor>(m, "Governor",
-                               "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.")
-      .def(py::init(&make_governor), py::arg("J"), py::arg("kp") = 5.0, py::arg("kd") = 1.0,
-           py::arg("tau_max") = 1.0, py::arg("cones") = std::vector<ConeConstraint>{},
-           py::arg("mode") = "pet", py::arg("kappa") = 1.0, py::arg("c_gamma") = 3.0,
-           py::arg("Ts") = 0.5, py::arg("epsilon") = 1e-3, py::arg("epsilon_gamma") = 0.1)
-      .def("reset", &AttitudeGovernor::reset, py::arg("t0"), py::arg("R_g0"),
+  py::class_<PyGovernor>(m, "Governor",
+                         "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.")
+      .def(py::init<const Mat3&, double, double, double, const std::vector<ConeConstraint>&,
+                    const std::string&, double, double, double, double, double>(),
+           py::arg("J"), py::kw_only(), py::arg("kp"), py::arg("kd"), py::arg("tau_max"),
+           py::arg("cones") = std::vector<ConeConstraint>{}, py::arg("mode") = "pet",
+           py::arg("kappa") = 1.0, py::arg("c_gamma") = 3.0, py::arg("Ts") = 0.5,
+           py::arg("epsilon") = 1e-3, py::arg("epsilon_gamma") = 0.1,
+           "kp, kd, tau_max are required (as in a scenario file); every argument is checked by "
+           "the scenario readers (ValueError naming it).")
+      .def("reset", &PyGovernor::reset, py::arg("t0"), py::arg("R_g0"),
            "Start at t0 with R_g(t0) = R_g0 (PET-ERG paper, Sec. IV-A).")
-      .def("step", &AttitudeGovernor::step, py::arg("t"), py::arg("R"), py::arg("omega_b"),
-           py::arg("R_d"), py::return_value_policy::copy,
-           "One control step (PET-ERG paper, Fig. 1): returns a GovernorOutput with τ (3).")
-      .def("evaluate", &AttitudeGovernor::evaluate, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
-           py::arg("R_d"), py::arg("flag"), "Stateless evaluation of (3)-(6) at one state.")
-      .def("lyapunov", &AttitudeGovernor::lyapunov, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
+      .def("step", &PyGovernor::step, py::arg("t"), py::arg("R"), py::arg("omega_b"),
+           py::arg("R_d"),
+           "One control step (PET-ERG paper, Fig. 1): returns a GovernorOutput with τ (3). "
+           "Refuses a call before reset(), time going backwards, a non-rotation R or R_d and a "
+           "non-finite omega_b (ValueError naming the argument).")
+      .def("evaluate", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g,
+                          const Mat3& R_d, bool flag) { return g.governor().evaluate(R, w, R_g, R_d, flag); },
+           py::arg("R"), py::arg("omega_b"), py::arg("R_g"), py::arg("R_d"), py::arg("flag"),
+           "Stateless evaluation of (3)-(6) at one state.")
+      .def("lyapunov", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
+             return g.governor().lyapunov(R, w, R_g);
+           }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
            "V(R, ω, R_g) = ½ωᵀJω + k_p φ(RᵀR_g) (Sec. III-A).")
-      .def("gamma", &AttitudeGovernor::gamma, py::arg("R_g"), "Γ(R_g) (Sec. III-B.1).")
-      .def("trigger_condition", &AttitudeGovernor::trigger_condition, py::arg("R"),
-           py::arg("omega_b"), py::arg("R_g"), "Trigger (5): Γ(R_g) − c_Γ V ≥ 0.")
-      .def_property_readonly("reference", &AttitudeGovernor::reference)
-      .def_property_readonly("trigger_flag", &AttitudeGovernor::trigger_flag)
-      .def_property_readonly("gamma_d", &AttitudeGovernor::gamma_d)
-      .def_property_readonly("cones", [](const AttitudeGovernor& g) {
-        return std::vector<ConeConstraint>(g.cones().begin(), g.cones().end());
+      .def("gamma", [](const PyGovernor& g, const Mat3& R_g) { return g.governor().gamma(R_g); },
+           py::arg("R_g"), "Γ(R_g) (Sec. III-B.1).")
+      .def("trigger_condition", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
+             return g.governor().trigger_condition(R, w, R_g);
+           }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"), "Trigger (5): Γ(R_g) − c_Γ V ≥ 0.")
+      .def_property_readonly("reference", [](const PyGovernor& g) { return g.governor().reference(); })
+      .def_property_readonly("trigger_flag", [](const PyGovernor& g) { return g.governor().trigger_flag(); })
+      .def_property_readonly("gamma_d", [](const PyGovernor& g) { return g.governor().gamma_d(); })
+      .def_property_readonly("cones", [](const PyGovernor& g) {
+        return std::vector<ConeConstraint>(g.governor().cones().begin(), g.governor().cones().end());
       });
 }
 

@@ -3,12 +3,16 @@
 /// quaternion PID (27), step-able from Python.
 
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include "attiguard/control/quaternion_pid.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/argument_checks.hpp"
 #include "attiguard/guidance/mission.hpp"
 #include "bindings.hpp"
 
@@ -32,6 +36,27 @@ std::unique_ptr<OwnedMission> make_mission(const std::vector<Vec3>& waypoints, d
                                            double t_max, double f_max, double cruise_speed,
                                            double pointing_tolerance, double kp, double ki,
                                            double kd) {
+  // The scenario readers' number checks (scenario/argument_checks.hpp): Mission(mass=0) used
+  // to give NaN commands.
+  constexpr const char* kLabel = "Mission()";
+  for (const auto& [key, value] : {std::pair<const char*, double>{"mass", mass}, {"t_max", t_max},
+                                   {"f_max", f_max}, {"cruise_speed", cruise_speed},
+                                   {"pointing_tolerance", pointing_tolerance}}) {
+    (void)scenario::checked_number(value, key, true, kLabel);
+  }
+  for (const auto& [key, value] : {std::pair<const char*, double>{"kp", kp}, {"ki", ki}, {"kd", kd}}) {
+    (void)scenario::checked_number(value, key, false, kLabel);
+  }
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    const std::string key = "waypoints[" + std::to_string(i) + "]";
+    try {
+      (void)scenario::checked_vector3(waypoints[i], key, kLabel);
+    } catch (const InputError& e) {  // the key is a Python index, not a quoted TOML key
+      std::string m = e.what();
+      if (const auto at = m.find('"' + key + '"'); at != std::string::npos) m.replace(at, key.size() + 2, key);
+      throw InputError(m);
+    }
+  }
   auto owned = std::make_unique<OwnedMission>();
   owned->waypoints = waypoints;
   guidance::MissionParams p;

@@ -135,7 +135,7 @@ def test_input_error_from_dict_names_the_key():
 
 def test_governor_closed_loop_in_python_keeps_the_constraints():
     J = np.diag([1.0, 2.0, 3.0])
-    cone = ag.keep_in_cone([0, 0, 1], [-0.791, 0.061, -0.609], math.radians(160.0))
+    cone = ag.keep_in_cone([0, 0, 1], [-0.791, 0.061, -0.609], half_angle_deg=160.0)
     gov = ag.Governor(J, kp=5.0, kd=1.0, tau_max=2.5, cones=[cone], Ts=0.5)
     body = ag.RigidBody(J)
     R, w = np.eye(3), np.array([0.2, 0.3, 0.4])
@@ -169,8 +169,56 @@ def test_mission_and_pid_step():
 
 
 def test_governor_rejects_bad_parameters():
-    with pytest.raises(ValueError):
-        ag.Governor(np.diag([1.0, 2.0, 3.0]), tau_max=-1.0)
+    J = np.diag([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match=r"^Governor\(\): tau_max: must be > 0, got -1$"):
+        ag.Governor(J, kp=5.0, kd=1.0, tau_max=-1.0)
+    # the file reader's inertia check (shared C++ validation): triangle inequality
+    with pytest.raises(ValueError, match=r"Governor\(\): J: principal moments 1, 1, 3 violate the triangle"):
+        ag.Governor(np.diag([1.0, 1.0, 3.0]), kp=5.0, kd=1.0, tau_max=1.0)
+    with pytest.raises(ValueError, match=r"Governor\(\): Ts: must be finite, got nan"):
+        ag.Governor(J, kp=5.0, kd=1.0, tau_max=1.0, Ts=float("nan"))
+    # kp, kd, tau_max are required, as in a scenario file (no silent defaults)
+    with pytest.raises(TypeError):
+        ag.Governor(J)  # type: ignore[call-arg]
+
+
+def test_cones_take_explicit_units_and_the_file_checks():
+    assert ag.keep_out_cone([0, 0, 1], [1, 0, 0], half_angle_deg=40.0).theta_c == pytest.approx(
+        math.radians(140.0))
+    assert ag.keep_in_cone([0, 0, 1], [1, 0, 0], half_angle_rad=0.5).theta_c == 0.5
+    with pytest.raises(ValueError, match="half_angle_rad is in radians; for 40 degrees write half_angle_deg = 40"):
+        ag.keep_out_cone([0, 0, 1], [1, 0, 0], half_angle_rad=40.0)
+    with pytest.raises(ValueError, match=r"half_angle_deg: must be in \[0, 180\), got 200"):
+        ag.keep_out_cone([0, 0, 1], [1, 0, 0], half_angle_deg=200.0)
+    with pytest.raises(ValueError, match=r"direction_i: must be a non-zero direction"):
+        ag.keep_in_cone([0, 0, 1], [0, 0, 0], half_angle_deg=30.0)
+    with pytest.raises(ValueError, match="exactly one of half_angle_deg"):
+        ag.keep_in_cone([0, 0, 1], [1, 0, 0])
+    with pytest.raises(ValueError, match="not both"):
+        ag.keep_in_cone([0, 0, 1], [1, 0, 0], half_angle_deg=30.0, half_angle_rad=0.5)
+
+
+def test_governor_step_refuses_bad_state_naming_the_argument():
+    gov = ag.Governor(np.diag([1.0, 2.0, 3.0]), kp=5.0, kd=1.0, tau_max=2.5)
+    with pytest.raises(ValueError, match=r"Governor.step\(\): call reset\(t0, R_g0\) before the first step"):
+        gov.step(0.0, np.eye(3), np.zeros(3), np.eye(3))
+    gov.reset(0.0, np.eye(3))
+    with pytest.raises(ValueError, match=r"Governor.step\(\): R: not a rotation matrix"):
+        gov.step(0.0, 2.0 * np.eye(3), np.zeros(3), np.eye(3))
+    with pytest.raises(ValueError, match=r"Governor.step\(\): omega_b\[0\]: must be finite, got nan"):
+        gov.step(0.0, np.eye(3), np.array([np.nan, 0.0, 0.0]), np.eye(3))
+    with pytest.raises(ValueError, match=r"Governor.step\(\): R_d: not a rotation matrix"):
+        gov.step(0.0, np.eye(3), np.zeros(3), np.zeros((3, 3)))
+    assert np.all(np.isfinite(gov.step(1.0, np.eye(3), np.zeros(3), np.eye(3)).tau_b))
+    with pytest.raises(ValueError, match=r"t: time went backwards \(t = 0.5 s < 1 s of the previous call\)"):
+        gov.step(0.5, np.eye(3), np.zeros(3), np.eye(3))
+
+
+def test_mission_refuses_a_zero_mass():
+    with pytest.raises(ValueError, match=r"^Mission\(\): mass: must be > 0, got 0$"):
+        ag.Mission([[100.0, 0.0, 0.0]], mass=0.0)
+    with pytest.raises(ValueError, match=r"Mission\(\): waypoints\[0\]\[0\]: must be finite"):
+        ag.Mission([[math.nan, 0.0, 0.0]])
 
 
 # ---- reach(): the balls -----------------------------------------------------------------------

@@ -44,6 +44,8 @@ def _params(node: ast.FunctionDef) -> list[tuple[str, bool]]:
     args = node.args.posonlyargs + node.args.args
     defaults = [False] * (len(args) - len(node.args.defaults)) + [True] * len(node.args.defaults)
     out = [(a.arg, d) for a, d in zip(args, defaults)]
+    if node.args.kwonlyargs:  # pybind11's signature line shows the bare "*" too
+        out.append(("*", False))
     out += [(a.arg, d is not None) for a, d in zip(node.args.kwonlyargs, node.args.kw_defaults)]
     return out[1:] if out and out[0][0] == "self" else out
 
@@ -208,11 +210,11 @@ def test_mypy_sees_the_real_signatures(tmp_path):
         "import numpy as np\nimport attiguard\n"
         "R = attiguard.expm([0.0, 0.0, 1.0])\n"
         "d: float = attiguard.distance(R, np.eye(3))\n"
-        "gov = attiguard.Governor(np.eye(3), kp=5.0, tau_max=2.5)\n"
+        "gov = attiguard.Governor(np.eye(3), kp=5.0, kd=1.0, tau_max=2.5)\n"
         "m: float = gov.step(0.0, R, np.zeros(3), R).min_margin\n"
         "result: attiguard.RunResult = attiguard.run('x.toml')\n")
     (tmp_path / "bad.py").write_text(
-        "import attiguard\nattiguard.Governor([[1.0]], kp='five')\n"
+        "import attiguard\nattiguard.Governor([[1.0]], kp='five', kd=1.0, tau_max=1.0)\n"
         "x: str = attiguard.phi([[1.0]])\n")
     (tmp_path / "mypy.ini").write_text("[mypy]\n")
     r = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", "--follow-imports=silent",

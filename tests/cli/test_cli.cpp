@@ -210,6 +210,204 @@ TEST(CliContract, FailedRunLeavesOnlyAPartialTrajectory) {
   EXPECT_EQ(read_file(dir / "out/trajectory.csv.partial").rfind("t,", 0), 0u);
 }
 
+// --runs is bounded before any work (10^10 runs used to grow to 2.1 GB, then bad_alloc);
+// --max-runs raises the limit, and the limit flags refuse nonsense.
+TEST(CliContract, CampaignRunsBeyondTheLimitAreRefusedUntilRaised) {
+  const fs::path dir = scratch_dir();
+  const std::string file = quoted(example("pet_erg_campaign.toml").string());
+  const auto r = run_cli(dir, "campaign " + file + " --runs 10000000000 --out o");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("--runs: 10000000000 runs are more than the limit 1e+06"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("raise the limit with --max-runs N"), std::string::npos) << r.err;
+  EXPECT_EQ(run_cli(dir, "campaign " + file + " --runs 3 --max-runs 2 --out o").exit_code, 2);
+  EXPECT_EQ(run_cli(dir, "campaign " + file + " --runs 2 --max-runs 2 --out o").exit_code, 0);
+  for (const char* bad : {"0", "-5", "nan", "1e400", "x"}) {
+    SCOPED_TRACE(bad);
+    const auto b = run_cli(dir, std::string("check ") + file + " --max-steps " + bad);
+    EXPECT_EQ(b.exit_code, 2);
+    expect_one_error_line(b);
+    EXPECT_NE(b.err.find("must be a number >= 1"), std::string::npos) << b.err;
+  }
+}
+
+// The work limits have flags: a scenario refused for its step count passes with --max-steps.
+TEST(CliContract, MaxStepsRaisesTheStepLimit) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("pet_erg_paper.toml"));
+  text.replace(text.find("step = 0.01"), 11, "step = 1e-7");
+  write_file(dir / "fine.toml", text);
+  const auto refused = run_cli(dir, "check fine.toml");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("at most 1e+08, or raise the limit with --max-steps N"), std::string::npos)
+      << refused.err;
+  EXPECT_EQ(run_cli(dir, "check fine.toml --max-steps 1e9").exit_code, 0);
+}
+
+// A reach partition of 50 x 50 cells per axis is refused at once (it used to run 48 s, then
+// bad_alloc); --max-cells raises the limit.
+TEST(CliContract, ReachPartitionBeyondTheCellLimitIsRefusedAtOnce) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("conreach_hold_partitioned.toml"));
+  text.replace(text.find("attitude_cells = 3"), 18, "attitude_cells = 50");
+  text.replace(text.find("omega_cells = 1"), 15, "omega_cells = 50");
+  write_file(dir / "cells.toml", text);
+  const auto r = run_cli(dir, "reach cells.toml --out o");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("partition.omega_cells: attitude_cells = 50 and omega_cells = 50 make up to "
+                       "1.5625e+10 cells"), std::string::npos) << r.err;
+  EXPECT_EQ(run_cli(dir, "check cells.toml --max-cells 1e12").exit_code, 0);
+}
+
+// A diverging run names the key most likely responsible, located, with a hint (it used to say
+// only "integrator: non-finite state at t = ... (divergence)").
+TEST(CliContract, DivergenceNamesTheLikelyKeyWithAHint) {
+  const fs::path dir = scratch_dir();
+  std::string stiff = read_file(example("rigid_body_pd.toml"));
+  stiff.replace(stiff.find("inertia = [1.0, 2.0, 3.0]"), 25, "inertia = [1e-3, 1e3, 1e3]");
+  stiff.replace(stiff.find("step = 0.01"), 11, "step = 0.05");
+  write_file(dir / "stiff.toml", stiff);
+  const auto s = run_cli(dir, "run stiff.toml --out o");
+  EXPECT_EQ(s.exit_code, 3);
+  expect_one_error_line(s);
+  EXPECT_NE(s.err.find("(divergence); likely stiff.toml:25:8: simulation.step: 0.05 s is above the "
+                       "stability limit ~ 2/lambda_max = 0.00201 s of this inertia and these gains "
+                       "(lambda_max ~ 995 1/s): use integrator = \"rkmk_dp54\" or step <= 0.00201"),
+            std::string::npos) << s.err;
+  // The hint's advice works: rkmk_dp54 runs it.
+  stiff.replace(stiff.find("integrator = \"rkmk4\""), 20, "integrator = \"rkmk_dp54\"");
+  write_file(dir / "stiff_dp.toml", stiff);
+  EXPECT_EQ(run_cli(dir, "run stiff_dp.toml --out o").exit_code, 0);
+
+  std::string kappa = read_file(example("pet_erg_paper.toml"));
+  kappa.replace(kappa.find("kappa = 1.0"), 11, "kappa = 1e300");
+  write_file(dir / "kappa.toml", kappa);
+  const auto k = run_cli(dir, "run kappa.toml --out o");
+  EXPECT_EQ(k.exit_code, 3);
+  expect_one_error_line(k);
+  EXPECT_NE(k.err.find("likely kappa.toml:28:9: erg.kappa: 1e+300 turns the reference at up to "
+                       "kappa Gamma_d = 5.408e+299 rad/s"), std::string::npos) << k.err;
+}
+
+// An inertia of 1e300 is an input error at its key, not a divergence.
+TEST(CliContract, HugeInertiaIsAnInputError) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("rigid_body_pd.toml"));
+  text.replace(text.find("inertia = [1.0, 2.0, 3.0]"), 25, "inertia = [1e300, 1e300, 1e300]");
+  write_file(dir / "j.toml", text);
+  const auto r = run_cli(dir, "run j.toml --out o");
+  EXPECT_EQ(r.exit_code, 2);
+  expect_one_error_line(r);
+  EXPECT_NE(r.err.find("j.toml:9:11: body.inertia: an entry of 1e+300 kg m^2 is beyond the usable range"),
+            std::string::npos) << r.err;
+}
+
+// A failed run says so beside its partial rows: summary.json.partial holds status "partial",
+// the exit code and the error.
+TEST(CliContract, FailedRunWritesAPartialStatus) {
+  const fs::path dir = scratch_dir();
+  std::string stiff = read_file(example("rigid_body_pd.toml"));
+  stiff.replace(stiff.find("inertia = [1.0, 2.0, 3.0]"), 25, "inertia = [1e-3, 1e3, 1e3]");
+  stiff.replace(stiff.find("step = 0.01"), 11, "step = 0.05");
+  write_file(dir / "stiff.toml", stiff);
+  ASSERT_EQ(run_cli(dir, "run stiff.toml --out o").exit_code, 3);
+  const std::string status = read_file(dir / "o/summary.json.partial");
+  EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
+  EXPECT_NE(status.find("\"exit_code\": 3"), std::string::npos) << status;
+  EXPECT_NE(status.find("non-finite state"), std::string::npos) << status;
+  EXPECT_TRUE(fs::exists(dir / "o/trajectory.csv.partial"));
+  EXPECT_FALSE(fs::exists(dir / "o/summary.json"));
+}
+
+// A reach analysis that fails numerically (the enclosure diverges) leaves reach.json.partial
+// with its status instead of nothing.
+TEST(CliContract, FailedReachWritesAPartialReachJson) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("conreach_hold_too_large.toml"));
+  text.replace(text.find("attitude_radius = 0.08"), 22, "attitude_radius = 0.15");
+  text.replace(text.find("omega_radius = 0.08"), 19, "omega_radius = 0.15");
+  write_file(dir / "wide.toml", text);
+  const auto r = run_cli(dir, "reach wide.toml --out o");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  expect_one_error_line(r);
+  EXPECT_FALSE(fs::exists(dir / "o/reach.json"));
+  const std::string status = read_file(dir / "o/reach.json.partial");
+  EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
+  EXPECT_NE(status.find("no a priori enclosure"), std::string::npos) << status;
+}
+
+// SIGINT and SIGTERM in the middle of a run leave trajectory.csv.partial (its rows so far) and
+// no trajectory.csv or summary.json that would look complete.
+TEST(CliContract, InterruptedRunLeavesOnlyAPartialFile) {
+  const fs::path dir = scratch_dir();
+  std::string text = read_file(example("pet_erg_paper.toml"));
+  text.replace(text.find("step = 0.01"), 11, "step = 1e-4");          // 10^7 steps: ~15 s
+  text.replace(text.find("duration = 60.0"), 15, "duration = 1000.0");
+  text.replace(text.find("output_interval = 0.01"), 22, "output_interval = 0.1");
+  write_file(dir / "long.toml", text);
+  for (const char* sig : {"INT", "TERM"}) {
+    SCOPED_TRACE(sig);
+    const fs::path out = dir / (std::string("out_") + sig);
+    // env --default-signal: a background job of a non-interactive shell ignores SIGINT.
+    const std::string script = "cd " + quoted(dir.string()) + " && env --default-signal=INT " +
+                               quoted(ATTIGUARD_CLI_PATH) + " run long.toml --out " +
+                               quoted(out.string()) + " >/dev/null 2>&1 & p=$!; while [ ! -s " +
+                               quoted((out / "trajectory.csv.partial").string()) +
+                               " ]; do sleep 0.05; done; kill -" + sig + " $p; wait $p";
+    const int status = std::system(("sh -c " + quoted(script)).c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 128 + (std::string(sig) == "INT" ? 2 : 15));
+    EXPECT_TRUE(fs::exists(out / "trajectory.csv.partial"));
+    EXPECT_EQ(read_file(out / "trajectory.csv.partial").rfind("t,", 0), 0u);
+    EXPECT_FALSE(fs::exists(out / "trajectory.csv"));
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
+}
+
+// Re-using an output folder for another kind removes the earlier run's figures (recorded in
+// plots.txt), so none is left beside the new summary.
+TEST(CliContract, EarlierPlotsAreRemovedByTheNextRun) {
+  const fs::path dir = scratch_dir();
+  const auto first = run_cli(dir, "run " + quoted(example("rigid_body_pd.toml").string()) + " --out o --plot");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  if (first.err.find("no plots:") != std::string::npos) GTEST_SKIP() << first.err;
+  ASSERT_TRUE(fs::exists(dir / "o/attitude_error.png"));
+  write_file(dir / "o/mine.png", "not attiguard's");
+  const auto second = run_cli(dir, "run " + quoted(example("pet_erg_paper.toml").string()) + " --out o");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  for (const char* png : {"attitude_error.png", "angular_velocity.png", "torque.png",
+                          "quaternion.png", "energy_momentum.png"}) {
+    EXPECT_FALSE(fs::exists(dir / "o" / png)) << png;
+  }
+  EXPECT_FALSE(fs::exists(dir / "o/plots.txt"));
+  EXPECT_TRUE(fs::exists(dir / "o/mine.png"));  // not written by attiguard: kept
+}
+
+// Each output folder records the resolved scenario: the file with every default its readers
+// used filled in; running it again gives the same results.
+TEST(CliContract, RunWritesTheResolvedScenarioThatReproducesIt) {
+  const fs::path dir = scratch_dir();
+  for (const char* name : {"rigid_body_pd.toml", "pet_erg_paper.toml"}) {
+    SCOPED_TRACE(name);
+    const auto first = run_cli(dir, "run " + quoted(example(name).string()) + " --out a");
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_NE(first.out.find("a/scenario.resolved.toml"), std::string::npos) << first.out;
+    const std::string resolved = read_file(dir / "a/scenario.resolved.toml");
+    EXPECT_NE(resolved.find("abs_tol = "), std::string::npos) << resolved;  // a default
+    EXPECT_NE(resolved.find("max_step = 0.0"), std::string::npos) << resolved;
+    ASSERT_EQ(run_cli(dir, "run a/scenario.resolved.toml --out b").exit_code, 0);
+    auto without_wall_time = [](std::string s) {
+      const auto at = s.find("\"wall_time_s\"");
+      if (at != std::string::npos) s.erase(at, s.find('\n', at) - at);
+      return s;
+    };
+    EXPECT_EQ(without_wall_time(read_file(dir / "a/summary.json")),
+              without_wall_time(read_file(dir / "b/summary.json")));
+    EXPECT_EQ(read_file(dir / "a/trajectory.csv"), read_file(dir / "b/trajectory.csv"));
+  }
+}
+
 TEST(CliContract, MissingScenarioFileIsInvalidInput) {
   const auto r = run_cli(scratch_dir(), "check does_not_exist.toml");
   EXPECT_EQ(r.exit_code, 2);

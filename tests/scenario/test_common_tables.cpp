@@ -95,5 +95,51 @@ TEST(CommonTables, HeaderChecksTheKindAndDefaultsTheNameToTheStem) {
   EXPECT_TRUE(contains(wrong, "kind: expected \"reach\", got \"pet_erg\""));
 }
 
+// A half angle in radians that only makes sense in degrees names the degree key (every kind).
+TEST(CommonTables, HalfAngleInDegreesByMistakeNamesHalfAngleDeg) {
+  const std::string r = input_error([&] { (void)parse_reach(parse_document(reach_with_cone("half_angle = 40\n"), "f.toml")); });
+  const std::string p = input_error([&] { (void)parse_pet_erg(parse_document(pet_erg_with_cone("half_angle = 40\n"), "f.toml")); });
+  EXPECT_TRUE(contains(r, "half_angle is in radians; for 40 degrees write half_angle_deg = 40")) << r;
+  EXPECT_TRUE(contains(p, "half_angle is in radians; for 40 degrees write half_angle_deg = 40")) << p;
+  // A value beyond 360 is no degree either: the plain range message.
+  const std::string big = input_error([&] { (void)parse_reach(parse_document(reach_with_cone("half_angle = 400\n"), "f.toml")); });
+  EXPECT_FALSE(contains(big, "half_angle_deg = 400")) << big;
+}
+
+/// Restores the default work limits when a test ends.
+struct DefaultLimitsAfter {
+  ~DefaultLimitsAfter() { set_work_limits(WorkLimits{}); }
+};
+
+// attitude_cells = omega_cells = 50 (up to 1.6e10 cells) is refused before any work, with the
+// count; --max-cells (set_work_limits) raises the limit.
+TEST(CommonTables, ReachPartitionBeyondTheCellLimitIsRefusedUntilRaised) {
+  const DefaultLimitsAfter restore;
+  const std::string text = reach_with_cone("half_angle = 0.5\n") +
+                           "[partition]\nattitude_cells = 50\nomega_cells = 50\n";
+  const std::string e = input_error([&] { (void)parse_reach(parse_document(text, "f.toml")); });
+  EXPECT_TRUE(contains(e, "partition.omega_cells: attitude_cells = 50 and omega_cells = 50 make up "
+                          "to 1.5625e+10 cells (attitude_cells^3 x omega_cells^3), 1.5625e+11 "
+                          "cell-steps with reach.steps = 10 (at most 1e+05, or raise the limit "
+                          "with --max-cells N)")) << e;
+  WorkLimits raised;
+  raised.reach_cells = 1e12;
+  set_work_limits(raised);
+  EXPECT_EQ(parse_reach(parse_document(text, "f.toml")).attitude_cells, 50);
+}
+
+TEST(CommonTables, StepLimitNamesItsFlagAndCanBeRaised) {
+  const DefaultLimitsAfter restore;
+  std::string fix = pet_erg_with_cone("half_angle_deg = 120\n");
+  fix.replace(fix.find("duration = 1.0\n"), 15, "duration = 1.0\nstep = 1e-9\n");
+  const std::string e = input_error([&] { (void)parse_pet_erg(parse_document(fix, "f.toml")); });
+  EXPECT_TRUE(contains(e, "simulation.step: needs 1e+09 integrator steps over the duration 1 s "
+                          "(step = 1e-09 s; at most 1e+08, or raise the limit with --max-steps N)")) << e;
+  WorkLimits raised;
+  raised.run_steps = 1e10;
+  set_work_limits(raised);
+  EXPECT_EQ(parse_pet_erg(parse_document(fix, "f.toml")).integrator.step, 1e-9);
+}
+
 }  // namespace
 }  // namespace attiguard::scenario

@@ -55,8 +55,9 @@ std::string error_of(const std::string& relative) {
     if (doc.has_top_level("dispersions")) {  // as attiguard campaign (app/campaign_runner.cpp)
       const Document nominal = nominal_document(doc);
       const app::KindHandler& h = app::handler_for(nominal);
-      (void)read_dispersions(doc);
+      const DispersionPlan plan = read_dispersions(doc);
       h.check(nominal);
+      check_dispersion_bounds(plan, doc, h.check);
     } else {  // as attiguard check
       app::handler_for(doc).check(doc);
     }

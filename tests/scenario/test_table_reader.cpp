@@ -356,5 +356,32 @@ TEST(TableReaderInertia, NonPhysicalInertiaIsRejectedAtTheKey) {
                        "rows: expected an array of 3 rows of 3 numbers, got 2 elements"));
 }
 
+// Components whose norm over- or underflows still name a direction (they used to be refused as
+// "must be a non-zero direction").
+TEST(TableReader, DirectionOfHugeOrTinyComponentsIsTheDirectionTheyName) {
+  const Document doc =
+      parse_document("a = [1e300, 1e300, 0]\nb = [1e-310, 0, 0]\nz = [0, 0, 0]\n", "t.toml");
+  const TableReader r(doc);
+  const Eigen::Vector3d a = r.direction("a");
+  EXPECT_NEAR(a.x(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(a.y(), std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(a.z(), 0.0);
+  EXPECT_EQ(r.direction("b"), Eigen::Vector3d::UnitX());
+  EXPECT_TRUE(contains(input_error([&] { (void)r.direction("z"); }), "must be a non-zero direction"));
+}
+
+// Inertias beyond any body are refused as input (J = 1e300 used to diverge in the first step).
+TEST(TableReader, InertiaOutsideTheUsableRangeIsRefused) {
+  const Document doc = parse_document(
+      "big = [1e300, 1e300, 1e300]\nsmall = [1e-13, 1e-13, 1e-13]\nok = [1e-3, 1e3, 1e3]\n", "t.toml");
+  const TableReader r(doc);
+  EXPECT_EQ(input_error([&] { (void)r.inertia("big"); }),
+            "t.toml:1:7: big: an entry of 1e+300 kg m^2 is beyond the usable range of inertias (at "
+            "most 1e+12 kg m^2; is the unit kg m^2?)");
+  EXPECT_TRUE(contains(input_error([&] { (void)r.inertia("small"); }),
+                       "below the usable range of inertias (at least 1e-12 kg m^2"));
+  EXPECT_EQ(r.inertia("ok")(1, 1), 1e3);
+}
+
 }  // namespace
 }  // namespace attiguard::scenario

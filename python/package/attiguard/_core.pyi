@@ -58,10 +58,12 @@ class Cone:
     def theta_c(self) -> float: ...
     def margin(self, R: ArrayLike) -> float: ...
 
-def keep_in_cone(axis_b: ArrayLike, direction_i: ArrayLike, theta_c: float,
+def keep_in_cone(axis_b: ArrayLike, direction_i: ArrayLike, *,
+                 half_angle_deg: float | None = None, half_angle_rad: float | None = None,
                  delta_offset: float = 0.05, zeta_offset: float = 0.05,
                  repulsive_gain: float = 1.0) -> Cone: ...
-def keep_out_cone(axis_b: ArrayLike, avoid_i: ArrayLike, half_angle: float,
+def keep_out_cone(axis_b: ArrayLike, direction_i: ArrayLike, *,
+                  half_angle_deg: float | None = None, half_angle_rad: float | None = None,
                   delta_offset: float = 0.05, zeta_offset: float = 0.05,
                   repulsive_gain: float = 1.0) -> Cone: ...
 def pd_torque(R: ArrayLike, omega_b: ArrayLike, R_g: ArrayLike, kp: float,
@@ -101,7 +103,7 @@ class GovernorOutput:
     def min_margin(self) -> float: ...
 
 class Governor:
-    def __init__(self, J: ArrayLike, kp: float = 5.0, kd: float = 1.0, tau_max: float = 1.0,
+    def __init__(self, J: ArrayLike, *, kp: float, kd: float, tau_max: float,
                  cones: list[Cone] = ..., mode: str = "pet", kappa: float = 1.0,
                  c_gamma: float = 3.0, Ts: float = 0.5, epsilon: float = 1e-3,
                  epsilon_gamma: float = 0.1) -> None: ...

@@ -63,6 +63,7 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
   }
   c.plan = scenario::read_dispersions(doc);
   c.handler->check(c.nominal);
+  scenario::check_dispersion_bounds(c.plan, doc, c.handler->check);
   RunOptions options;
   options.out_dir = scratch;
   options.write_files = false;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document.hpp"
 
 namespace attiguard::app {
 
@@ -23,5 +24,19 @@ struct Failure {
 /// named in the out-of-memory message.
 [[nodiscard]] Failure describe_failure(const std::exception_ptr& error,
                                        const std::string& scenario) noexcept;
+
+/// The key most likely responsible for a numerical failure (a diverging run) of the scenario
+/// `doc`, located and with a hint (docs/errors.md, "Numerical failures"), or "" when none stands
+/// out. Looks, for kinds rigid_body and pet_erg, at a fixed step above the stability limit
+/// ≈ 2/λ_max of the PD-controlled body (λ_max: the fastest eigenvalue of J_i s² + k_d s + k_p
+/// over the principal moments J_i, and the gyroscopic rate |ω0| max|J_j − J_k|/J_i), and at an
+/// erg.kappa that turns the reference by more than 1 rad per integrator step (κ Γ_d h > 1).
+/// Never throws.
+[[nodiscard]] std::string numerical_failure_hint(const scenario::Document& doc) noexcept;
+
+/// `message` of a numerical failure of `doc`'s run followed by its hint ("; likely …"), or
+/// `message` alone when there is none.
+[[nodiscard]] std::string located_numerical_failure(const std::string& message,
+                                                    const scenario::Document& doc) noexcept;
 
 }  // namespace attiguard::app

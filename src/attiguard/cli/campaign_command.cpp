@@ -15,6 +15,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "attiguard/campaign/aggregation.hpp"
@@ -29,6 +31,8 @@
 #include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/output_records.hpp"
+#include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
 
@@ -60,6 +64,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
+  io::remove_recorded_plots(dir);
   const app::RunRecord r = app::run_one(c, k, options);
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
@@ -77,6 +82,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   }
   if (args.plot && r.status == app::RunStatus::ok) {
     const PlotOutcome p = plot_results(std::string(c.handler->name), dir);
+    io::record_plots(dir, p.written);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
   }
   if (args.aem && r.status == app::RunStatus::ok) {
@@ -98,6 +104,13 @@ void campaign_command(const CampaignArguments& args) {
   }
   if (!args.replay && args.runs < 1) throw InputError("--runs: must be at least 1");
   if (args.replay && *args.replay < 0) throw InputError("--replay: must be a run index >= 0");
+  if (const double most = scenario::limit_value(scenario::WorkLimit::campaign_runs);
+      !args.replay && static_cast<double>(args.runs) > most) {
+    throw InputError("--runs: " + std::to_string(args.runs) + " runs are more than the limit " +
+                     CLI::detail::to_string(most) +
+                     " (the run list and runs.csv grow with N: a campaign that size does not "
+                     "finish or fit); use fewer runs, or raise the limit with --max-runs N");
+  }
   make_dir(args.out_dir);
   const std::filesystem::path scratch =
       args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));
@@ -130,6 +143,7 @@ void campaign_command(const CampaignArguments& args) {
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {
     if (!args.resume) std::filesystem::remove(runs_path);
+    io::remove_recorded_plots(args.out_dir);
     write_identity(identity_path, identity);
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
@@ -221,6 +235,7 @@ void campaign_command(const CampaignArguments& args) {
   }
   if (args.plot) {
     const PlotOutcome p = plot_results("campaign", args.out_dir);
+    io::record_plots(args.out_dir, p.written);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
     if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
   }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <exception>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <system_error>
@@ -26,6 +27,7 @@
 #include "attiguard/core/version.hpp"
 #include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/scenario/work_limits.hpp"
 
 namespace {
 
@@ -104,6 +106,32 @@ std::uint64_t parse_seed(const std::string& text) {
                                 text + "'");
   }
   return seed;
+}
+
+/// The flags that raise the work limits (scenario/work_limits.hpp, docs/errors.md "Work too
+/// large") on subcommand `cmd`: `--max-steps`, `--max-output-rows`, `--max-runs`, `--max-cells`.
+void add_limit_flags(CLI::App* cmd, attiguard::scenario::WorkLimits& limits) {
+  using attiguard::scenario::WorkLimit;
+  using attiguard::scenario::limit_flag;
+  const auto add = [&](WorkLimit which, double& value, const char* what) {
+    cmd->add_option(std::string(limit_flag(which)), value,
+                    std::string("Refuse scenarios needing more ") + what + " (default " +
+                        CLI::detail::to_string(value) + ")")
+        ->type_name("N")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+              double x = 0.0;
+              const auto r = std::from_chars(text.data(), text.data() + text.size(), x);
+              const bool ok = r.ec == std::errc{} && r.ptr == text.data() + text.size() &&
+                              std::isfinite(x) && x >= 1.0;
+              return ok ? std::string() : "must be a number >= 1, got '" + text + "'";
+            },
+            "N"));
+  };
+  add(WorkLimit::run_steps, limits.run_steps, "integrator/governor steps per run");
+  add(WorkLimit::output_rows, limits.output_rows, "output rows per run");
+  add(WorkLimit::campaign_runs, limits.campaign_runs, "campaign runs");
+  add(WorkLimit::reach_cells, limits.reach_cells, "reach cells x steps");
 }
 
 int run(int argc, char** argv) {
@@ -192,6 +220,9 @@ int run(int argc, char** argv) {
       ->required()
       ->type_name("DIR");
 
+  attiguard::scenario::WorkLimits limits = attiguard::scenario::work_limits();
+  for (CLI::App* cmd : {run_cmd, check_cmd, reach_cmd, campaign_cmd}) add_limit_flags(cmd, limits);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -212,6 +243,7 @@ int run(int argc, char** argv) {
     return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   }
   if (campaign_cmd->parsed()) campaign_args.seed = parse_seed(seed_text);
+  attiguard::scenario::set_work_limits(limits);
 
   if (run_cmd->parsed()) {
     attiguard::cli::run_command(run_args);

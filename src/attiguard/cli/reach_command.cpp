@@ -14,6 +14,9 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/reach_run.hpp"
+#include "attiguard/io/json_file.hpp"
+#include "attiguard/io/output_records.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/reach_scenario.hpp"
 
@@ -29,11 +32,23 @@ void reach_command(const ReachArguments& args) {
   // rethrowing.
   const parallel::World world = parallel::mpi_world();
   nlohmann::json summary;
+  if (world.root()) {
+    io::remove_recorded_plots(args.out_dir);
+    io::ensure_directory(args.out_dir);
+    io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
+                   scenario::resolve_scenario(doc, [](const scenario::Document& d) { (void)scenario::parse_reach(d); }));
+  }
   try {
     summary = app::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
-    if (args.plot && world.root()) (void)plot_results("reach", args.out_dir);
+    if (args.plot && world.root()) io::record_plots(args.out_dir, plot_results("reach", args.out_dir).written);
     if (args.view && world.root()) (void)write_run_view(args.out_dir);
+    throw;
+  } catch (const Error& e) {  // no reach.json: reach.json.partial says why
+    if (world.root()) {
+      io::write_failure_status(args.out_dir, "reach.json", "reach", args.scenario.string(),
+                               static_cast<int>(e.code()), e.what());
+    }
     throw;
   }
   if (!world.root()) return;
@@ -50,9 +65,11 @@ void reach_command(const ReachArguments& args) {
   std::cout << "  soundness: " << summary["soundness"]["inside"].get<long>() << "/"
             << summary["soundness"]["samples"].get<long>() << " sampled trajectories inside\n";
   std::cout << "  verdict: " << summary["verdict"].get<std::string>() << '\n';
-  std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << '\n';
+  std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << "\n  "
+            << (args.out_dir / scenario::kResolvedScenarioFile).string() << '\n';
   if (args.plot) {
     const PlotOutcome plots = plot_results("reach", args.out_dir);
+    io::record_plots(args.out_dir, plots.written);
     for (const auto& p : plots.written) std::cout << "  " << p.string() << '\n';
     if (plots.skipped_because) std::cerr << "attiguard: warning: no plots: " << *plots.skipped_because << '\n';
   }

@@ -16,7 +16,10 @@
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
+#include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/io/output_records.hpp"
 
 namespace attiguard::cli {
 namespace {
@@ -121,11 +124,30 @@ void run_command(const RunArguments& args) {
 
   app::RunOptions options;
   options.out_dir = args.out_dir;
-  const nlohmann::json summary = handler.run(doc, options);
+  io::remove_recorded_plots(args.out_dir);  // an earlier run's figures, maybe of another kind
+  // What this run is computed from, every default filled in (scenario/resolved_scenario.hpp).
+  io::write_text(args.out_dir, scenario::kResolvedScenarioFile, scenario::resolve_scenario(doc, handler.check));
+  const nlohmann::json summary = [&] {
+    // A failure leaves summary.json.partial saying so beside trajectory.csv.partial.
+    const auto mark_partial = [&](const Error& e) {
+      io::write_failure_status(args.out_dir, "summary.json", std::string(handler.name),
+                               args.scenario.string(), static_cast<int>(e.code()), e.what());
+    };
+    try {
+      return handler.run(doc, options);
+    } catch (const NumericalError& e) {  // name the key most likely responsible (app/failure.hpp)
+      const NumericalError located(app::located_numerical_failure(e.what(), doc));
+      mark_partial(located);
+      throw located;
+    } catch (const Error& e) {
+      mark_partial(e);
+      throw;
+    }
+  }();
   print_summary(summary, args.scenario.string(), handler.name);
 
   std::vector<std::filesystem::path> written;
-  for (const char* file : {"trajectory.csv", "summary.json"}) {
+  for (const char* file : {"trajectory.csv", "summary.json", scenario::kResolvedScenarioFile}) {
     const auto path = args.out_dir / file;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) written.push_back(path);
@@ -137,6 +159,7 @@ void run_command(const RunArguments& args) {
   std::string no_plots;
   if (args.plot) {
     PlotOutcome plots = plot_results(std::string(handler.name), args.out_dir);
+    io::record_plots(args.out_dir, plots.written);
     written.insert(written.end(), plots.written.begin(), plots.written.end());
     if (plots.skipped_because) no_plots = *plots.skipped_because;
   }

@@ -4,6 +4,8 @@
 #include "attiguard/scenario/common_tables.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <algorithm>
 
 #include <numbers>
 #include <optional>
@@ -51,6 +53,20 @@ double angle(const TableReader& t, const std::string& key, const NumberRule& rul
   if (has_rad && has_deg) {
     t.fail(key_deg, "give either " + key + " (rad) or " + key_deg + " (degrees), not both");
   }
+  if (has_rad && !has_deg) {
+    // A value that only makes sense in degrees (half_angle = 40): say which key takes degrees.
+    const double x = t.number(key);
+    const bool below = rule_rad.min && (rule_rad.min_exclusive ? x <= *rule_rad.min : x < *rule_rad.min);
+    const bool above = rule_rad.max && (rule_rad.max_exclusive ? x >= *rule_rad.max : x > *rule_rad.max);
+    if (!below && above && x <= 360.0) {
+      t.fail(key, "must be " + std::string(rule_rad.min_exclusive ? "> " : ">= ") +
+                      detail::format_number(rule_rad.min.value_or(0.0)) + " and " +
+                      (rule_rad.max_exclusive ? "< " : "<= ") + detail::format_number(*rule_rad.max) +
+                      " rad, got " + detail::format_number(x) + ": " + key + " is in radians; for " +
+                      detail::format_number(x) + " degrees write " + key_deg + " = " +
+                      detail::format_number(x));
+    }
+  }
   if (has_deg) {
     NumberRule rule_deg = rule_rad;
     if (rule_deg.min) {
@@ -78,12 +94,66 @@ ConeGeometry read_cone_geometry(const TableReader& t) {
   return g;
 }
 
+namespace {
+
+/// A derived figure for a message: 6 significant digits.
+std::string approx(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+/// `angle` [rad] in the unit of the key the cone's half angle was given as.
+std::string in_unit_of(const ConeGeometry& g, double angle) {
+  return g.half_angle_key == "half_angle_deg" ? approx(angle / kDegree) + " deg"
+                                              : approx(angle) + " rad";
+}
+
+/// The navigation field of a cone (docs/pet-erg.md, "Repulsive potential") needs
+/// cos θ_c < δ < ζ < 1 with δ = cos θ_c + delta_offset, ζ = δ + zeta_offset: the body axis must
+/// have a cap of angle φ = θ_c (keep-in) or π − α (keep-out) around the allowed direction, with
+/// cos φ + delta_offset + zeta_offset < 1, or the repulsive band covers every attitude. Refused
+/// in the user's terms (the cone as given, its half angle in its own unit): at the half angle
+/// when even the default offsets (0.05 + 0.05) leave no room, else at the larger offset given.
+void require_room_for_field(const TableReader& t, const ConeGeometry& g, double delta_offset,
+                            double zeta_offset) {
+  constexpr double kDefaultOffsets = 0.05 + 0.05;
+  const double phi = g.keep_out ? std::numbers::pi - g.half_angle : g.half_angle;
+  const double offsets = delta_offset + zeta_offset;
+  const double zeta = std::cos(phi) + offsets;
+  if (zeta < 1.0) return;
+  const std::string cone = std::string(g.keep_out ? "a keep-out" : "a keep-in") +
+                           " cone of half angle " + in_unit_of(g, g.half_angle);
+  const std::string why =
+      cone + " leaves the body axis a cap of " + in_unit_of(g, phi) + " around " +
+      (g.keep_out ? "the opposite of direction_i" : "direction_i") +
+      "; its navigation field needs cos(" + in_unit_of(g, phi) + ") + delta_offset + zeta_offset"
+      " < 1, got " + approx(std::cos(phi)) + " + " + detail::format_number(delta_offset) + " + " +
+      detail::format_number(zeta_offset) + " = " + approx(zeta) +
+      " (the repulsive band would cover every attitude): ";
+  const bool offsets_given = t.has("delta_offset") || t.has("zeta_offset");
+  if (offsets_given && std::cos(phi) + kDefaultOffsets < 1.0) {
+    const bool at_zeta = t.has("zeta_offset") && (!t.has("delta_offset") || zeta_offset >= delta_offset);
+    t.fail(at_zeta ? "zeta_offset" : "delta_offset",
+           why + "use delta_offset + zeta_offset < 1 - cos(" + in_unit_of(g, phi) + ") = " +
+               approx(1.0 - std::cos(phi)));
+  }
+  const double room = std::acos(std::max(-1.0, 1.0 - std::min(offsets, 2.0)));  // smallest cap
+  t.fail(g.half_angle_key,
+         why + (g.keep_out ? "use a half angle below " + in_unit_of(g, std::numbers::pi - room)
+                           : "use a half angle above " + in_unit_of(g, room)) +
+             (offsets_given ? " with these offsets" : ""));
+}
+
+}  // namespace
+
 governor::ConeConstraint parse_cone(const TableReader& t) {
   declare(t, {"delta_offset", "zeta_offset", "repulsive_gain"});
   const ConeGeometry g = read_cone_geometry(t);
   const double delta_offset = t.number_or("delta_offset", 0.05, NumberRule::positive());
   const double zeta_offset = t.number_or("zeta_offset", 0.05, NumberRule::positive());
   const double gain = t.number_or("repulsive_gain", 1.0, NumberRule::positive());
+  require_room_for_field(t, g, delta_offset, zeta_offset);
   const governor::ConeConstraint cone =
       g.keep_out ? governor::keep_out_cone(g.axis_b, g.direction_i, g.half_angle, delta_offset,
                                            zeta_offset, gain)
@@ -93,6 +163,30 @@ governor::ConeConstraint parse_cone(const TableReader& t) {
     t.fail(g.half_angle_key, *err);
   }
   return cone;
+}
+
+std::string cone_domain_message(const TableReader& root, std::size_t index,
+                                const governor::ConeConstraint& cone, double c,
+                                bool reference_given) {
+  const ConeGeometry g = read_cone_geometry(root.array_of_tables("cones").at(index));
+  const std::string who = reference_given ? "the initial reference R_g(0)" : "the initial attitude";
+  const std::string name = "cones[" + std::to_string(index) + "]";
+  // Angles of the body axis from direction_i as the user gave it (a keep-out cone stores −s).
+  const double angle = std::acos(std::clamp(g.keep_out ? -c : c, -1.0, 1.0));
+  const double edge = std::acos(std::clamp(g.keep_out ? -cone.delta : cone.delta, -1.0, 1.0));
+  const bool violated = g.keep_out ? angle < g.half_angle : angle > g.half_angle;
+  std::string m = who + " puts the body axis axis_b " + in_unit_of(g, angle) + " from direction_i of " +
+                  name + ", " + (g.keep_out ? "a keep-out" : "a keep-in") + " cone of half angle " +
+                  in_unit_of(g, g.half_angle);
+  if (violated) {
+    m += g.keep_out ? ": it starts inside the cone it must avoid" : ": it starts outside the cone it must stay in";
+  } else {
+    m += std::string(": it starts within the navigation field's margin (delta_offset = ") +
+         approx(cone.delta - cone.cos_theta_c) + " needs " +
+         (g.keep_out ? "more than " : "less than ") + in_unit_of(g, edge) + ")";
+  }
+  return m + "; start " + (reference_given ? "the reference" : "the attitude") +
+         (g.keep_out ? " farther from direction_i" : " closer to direction_i");
 }
 
 std::vector<governor::ConeConstraint> parse_cones(const TableReader& root) {
@@ -174,18 +268,41 @@ integrate::IntegratorSettings parse_integrator_settings(const TableReader& simul
   return settings;
 }
 
+namespace {
+/// " (at most L; raise the limit with --flag N)".
+std::string limit_clause(WorkLimit limit) {
+  return "at most " + detail::format_number(limit_value(limit)) + ", or raise the limit with " +
+         std::string(limit_flag(limit)) + " N";
+}
+}  // namespace
+
 void require_countable(const TableReader& t, std::string_view key, double value, double duration,
-                       double limit, std::string_view what) {
+                       WorkLimit limit, std::string_view what) {
   const double count = duration / value;
-  if (count <= limit) return;
+  if (count <= limit_value(limit)) return;
   const std::string message = "needs " + detail::format_number(std::ceil(count)) + " " +
                               std::string(what) + " over the duration " +
                               detail::format_number(duration) + " s (" + std::string(key) + " = " +
-                              detail::format_number(value) + " s; at most " +
-                              detail::format_number(limit) + "): a run that size does not finish " +
-                              "in reasonable time; use a larger " + std::string(key);
+                              detail::format_number(value) + " s; " + limit_clause(limit) +
+                              "): a run that size does not finish in reasonable time; use a "
+                              "larger " + std::string(key);
   if (t.has(key)) t.fail(key, message);
   t.fail(key, "the default " + message + " (set " + std::string(key) + ")");
+}
+
+void require_cell_budget(const TableReader& partition, std::string_view key, int attitude_cells,
+                         int omega_cells, int steps) {
+  const double cells = std::pow(static_cast<double>(attitude_cells), 3) *
+                       std::pow(static_cast<double>(omega_cells), 3);
+  const double work = cells * steps;
+  if (work <= limit_value(WorkLimit::reach_cells)) return;
+  partition.fail(key, "attitude_cells = " + std::to_string(attitude_cells) + " and omega_cells = " +
+                          std::to_string(omega_cells) + " make up to " +
+                          detail::format_number(cells) + " cells (attitude_cells^3 x omega_cells^3)"
+                          ", " + detail::format_number(work) + " cell-steps with reach.steps = " +
+                          std::to_string(steps) + " (" + limit_clause(WorkLimit::reach_cells) +
+                          "): an analysis that size does not finish in reasonable time; use fewer "
+                          "cells");
 }
 
 void require_step_budget(const TableReader& simulation, const integrate::IntegratorSettings& s,

@@ -21,6 +21,7 @@
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/table_reader.hpp"
+#include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::scenario {
 
@@ -79,6 +80,15 @@ struct ConeGeometry {
 /// parse_cone and finished.
 [[nodiscard]] std::vector<governor::ConeConstraint> parse_cones(const TableReader& root);
 
+/// Why the initial reference (or, when `reference_given` is false, the initial attitude it
+/// defaults to) is outside the navigation field's domain c > δ of cone `index` of `root`'s
+/// [[cones]] (c = a_c^T R a_b, PET-ERG paper (2b)), in the cone's own terms: the angle of the body
+/// axis from direction_i against the half angle as given (keep-out or keep-in, in its unit), and
+/// whether it is inside the forbidden region or only within the field's margin (delta_offset).
+[[nodiscard]] std::string cone_domain_message(const TableReader& root, std::size_t index,
+                                              const governor::ConeConstraint& cone, double c,
+                                              bool reference_given);
+
 /// The governor block shared by kinds pet_erg and mission: `governor` (name table
 /// governor::kGovernorModeNames, default "pet"), [control] kp, kd, tau_max (PD law (3) and the
 /// torque limit (2a)), and the optional [erg] table (parse_erg_table). `control_extra` names
@@ -102,17 +112,18 @@ void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
 /// max_step); shared by every scenario kind (docs/scenario-format.md, "Integrator keys").
 [[nodiscard]] integrate::IntegratorSettings parse_integrator_settings(const TableReader& simulation);
 
-/// The most integrator steps, governor samples or control samples a run may need, and the most
-/// rows it may write (docs/errors.md, "Work too large"): beyond them a run would not finish in
-/// reasonable time or would fill the disk, so the scenario is refused before any work.
-inline constexpr double kMaxRunSteps = 1e8;
-inline constexpr double kMaxOutputRows = 1e7;
-
 /// Rejects an interval `key` of `t` (a step, a period, an output interval) that `duration`
-/// would need more than `limit` times (`what`: "integrator steps", "output rows", …), with the
-/// predicted count in the message; `t.fail` when present, a "set it" message when defaulted.
+/// would need more than the limit in force of `limit` times (work_limits.hpp; `what`:
+/// "integrator steps", "output rows", …), with the predicted count and the flag that raises the
+/// limit in the message; `t.fail` when present, a "set it" message when defaulted.
 void require_countable(const TableReader& t, std::string_view key, double value, double duration,
-                       double limit, std::string_view what);
+                       WorkLimit limit, std::string_view what);
+
+/// Rejects a reach partition of `attitude_cells`³ × `omega_cells`³ cells (at most that many: the
+/// grid points outside the ball are dropped) whose `steps` reachability steps each exceed the
+/// reach cell-step limit in force (WorkLimit::reach_cells), located at `key` of `partition`.
+void require_cell_budget(const TableReader& partition, std::string_view key, int attitude_cells,
+                         int omega_cells, int steps);
 
 /// require_countable for the integrator: `step` of a fixed-step method, `max_step` (when set)
 /// of rkmk_dp54.

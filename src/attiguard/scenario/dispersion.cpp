@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
@@ -24,6 +26,45 @@ using lie::Mat3;
 using lie::Vec3;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+
+double as_double(const toml::node& n) { return n.value<double>().value_or(0.0); }
+
+/// The least probability mass a truncated normal must put inside its bounds to be sampled (by
+/// rejection: on average at most 1/kMinMass normal draws per value).
+constexpr double kMinMass = 1e-3;
+
+/// Φ(b) − Φ(a) of the standard normal, accurate in either tail.
+double normal_mass(double a, double b) {
+  const double s = std::numbers::sqrt2;
+  if (a > 0.0) return 0.5 * (std::erfc(a / s) - std::erfc(b / s));
+  if (b < 0.0) return 0.5 * (std::erfc(-b / s) - std::erfc(-a / s));
+  return 1.0 - 0.5 * (std::erfc(-a / s) + std::erfc(b / s));
+}
+
+/// Refuses a truncated normal around `nominal` whose mass inside its bounds is below kMinMass
+/// (σ = 1e6 on [0.1, 1]; mean 0.4, σ = 1e-9 on [10, 11]), with the numbers, at `sigma`.
+void require_sampleable_mass(const scenario::TableReader& t, const Dispersion& d, double nominal) {
+  const double mean = d.has_mean ? d.mean : nominal;
+  const double lo = d.has_bounds ? d.min : nominal - d.delta;
+  const double hi = d.has_bounds ? d.max : nominal + d.delta;
+  const double mass = normal_mass((lo - mean) / d.sigma, (hi - mean) / d.sigma);
+  if (mass >= kMinMass) return;
+  std::array<char, 32> buf{};
+  std::snprintf(buf.data(), buf.size(), "%.3g", mass);
+  const std::string mass_text = buf.data();
+  std::string hint;
+  if (d.sigma > hi - lo) {
+    hint = "sigma is wider than the bounds: for a flat spread use distribution = \"uniform\"";
+  } else {
+    hint = "the mean lies " + detail::format_number(std::abs(mean < lo ? lo - mean : mean - hi) / d.sigma) +
+           " sigma outside the bounds: move the mean inside or widen sigma";
+  }
+  t.fail("sigma", "a truncated_normal of mean " + detail::format_number(mean) + " and sigma " +
+                      detail::format_number(d.sigma) + " has a mass of " + mass_text +
+                      " inside [" + detail::format_number(lo) + ", " + detail::format_number(hi) +
+                      "] (at least " + detail::format_number(kMinMass) + " is needed to sample it): " +
+                      hint);
+}
 
 /// Reads one `[dispersions]` entry.
 Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
@@ -72,7 +113,10 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
     if (d.has_bounds) {
       d.min = t.number("min");
       d.max = t.number("max");
-      if (!(d.min < d.max)) t.fail("max", "must be greater than min");
+      if (!(d.min < d.max)) {
+        t.fail("max", "must be greater than min (min = " + detail::format_number(d.min) +
+                          ", max = " + detail::format_number(d.max) + ")");
+      }
     }
     if (has_delta) d.delta = t.number("delta", scenario::NumberRule::positive());
     if (d.has_bounds && has_delta) t.fail("delta", "give either min/max or delta, not both");
@@ -86,6 +130,13 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
       d.sigma = t.number("sigma", scenario::NumberRule::positive());
       d.has_mean = t.has("mean");
       if (d.has_mean) d.mean = t.number("mean");
+    }
+    if (d.distribution == Distribution::truncated_normal) {
+      if (d.type == DispersionType::number) {
+        require_sampleable_mass(t, d, as_double(value));
+      } else {
+        for (const auto& e : *value.as_array()) require_sampleable_mass(t, d, as_double(e));
+      }
     }
   } else if (type == "inertia") {
     d.type = DispersionType::inertia;
@@ -109,8 +160,6 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
   return d;
 }
 
-double as_double(const toml::node& n) { return n.value<double>().value_or(0.0); }
-
 /// A scalar draw around `nominal`.
 double draw_scalar(const Dispersion& d, double nominal, campaign::Rng& rng) {
   const double mean = d.has_mean ? d.mean : nominal;
@@ -122,11 +171,15 @@ double draw_scalar(const Dispersion& d, double nominal, campaign::Rng& rng) {
     case Distribution::normal:
       return mean + d.sigma * rng.normal();
     case Distribution::truncated_normal:
-      for (int i = 0; i < 10000; ++i) {
+      // read_entry guarantees a mass >= kMinMass inside [lo, hi]: 10^7 draws all outside have
+      // probability below e^-10000. Never the mean in their stead (that was a silent bias).
+      for (long i = 0; i < 10000000; ++i) {
         const double x = mean + d.sigma * rng.normal();
         if (x >= lo && x <= hi) return x;
       }
-      return std::clamp(mean, lo, hi);
+      throw NumericalError("dispersions.\"" + d.key + "\": no truncated_normal draw inside [" +
+                           detail::format_number(lo) + ", " + detail::format_number(hi) +
+                           "] in 10^7 tries");
   }
   return nominal;
 }
@@ -201,6 +254,38 @@ DispersionPlan read_dispersions(const scenario::Document& doc) {
   table.finish();
   if (const auto c = root.optional_table("campaign")) c->finish();
   return plan;
+}
+
+void check_dispersion_bounds(const DispersionPlan& plan, const scenario::Document& doc,
+                             void (*check)(const scenario::Document&)) {
+  const scenario::Document nominal = nominal_document(doc);
+  const scenario::TableReader dispersions = scenario::TableReader(doc).table("dispersions");
+  for (const Dispersion& d : plan.items) {
+    if (d.type != DispersionType::number || d.distribution != Distribution::normal) continue;
+    const toml::node* nom = resolve_key_path(root_table(nominal), d.key);
+    const double mean = d.has_mean ? d.mean : (nom != nullptr ? as_double(*nom) : 0.0);
+    for (const double side : {-1.0, 1.0}) {
+      const double x = mean + side * kNormalProbeSigmas * d.sigma;
+      scenario::Document probe = nominal;
+      assign_key_path(root_table(probe), d.key, toml::value<double>(x));
+      try {
+        check(probe);
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        const std::string at_key = ": " + d.key + ": ";
+        const auto pos = what.find(at_key);
+        if (pos == std::string::npos) continue;  // refused elsewhere: a rejected draw
+        dispersions.table(d.key).fail(
+            "sigma", "a normal of mean " + detail::format_number(mean) + " and sigma " +
+                         detail::format_number(d.sigma) + " crosses a bound of " + d.key +
+                         ": at mean " + (side < 0 ? "- " : "+ ") +
+                         detail::format_number(kNormalProbeSigmas) + " sigma = " +
+                         detail::format_number(x) + " the scenario says '" +
+                         what.substr(pos + at_key.size()) +
+                         "'; use truncated_normal with min and max inside the bound");
+      }
+    }
+  }
 }
 
 std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {

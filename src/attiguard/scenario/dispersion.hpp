@@ -61,6 +61,18 @@ struct DispersionPlan {
 /// at the offending key.
 [[nodiscard]] DispersionPlan read_dispersions(const scenario::Document& doc);
 
+/// How far a `normal` dispersion of a number is probed: mean ± kNormalProbeSigmas σ (a draw
+/// beyond it has probability 2·10⁻⁹).
+inline constexpr double kNormalProbeSigmas = 6.0;
+
+/// Refuses a `normal` dispersion of a number whose mean ± kNormalProbeSigmas σ the scenario's
+/// own validation `check` (the kind's: shared, not a copy) refuses at that very key, i.e. a
+/// normal crossing a physical bound such as k_p > 0 (docs/campaigns.md), with the numbers and
+/// the kind's message; located at the entry's `sigma` in `doc` (the campaign file). Values
+/// refused at another key (admissibility of the initial state, …) stay rejected draws.
+void check_dispersion_bounds(const DispersionPlan& plan, const scenario::Document& doc,
+                             void (*check)(const scenario::Document&));
+
 /// The scenario without its `[dispersions]` and `[campaign]` tables (what the kind validates).
 [[nodiscard]] scenario::Document nominal_document(const scenario::Document& doc);
 

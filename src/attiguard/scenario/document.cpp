@@ -148,6 +148,13 @@ void fail_at(const Document& doc, std::string_view key, std::string_view message
   TableReader(doc).fail(key, message);
 }
 
+void fail_in_table(const Document& doc, std::string_view table, std::string_view key,
+                   std::string_view message) {
+  const TableReader root(doc);
+  if (const auto t = root.optional_table(table)) t->fail(key, message);
+  root.fail(std::string(table) + "." + std::string(key), message);
+}
+
 Document parse_document(std::string_view text, const std::filesystem::path& path) {
   Document doc(path);
 #if TOML_EXCEPTIONS

@@ -70,4 +70,9 @@ inline constexpr std::size_t kMaxScenarioBytes = std::size_t{16} << 20;
 /// document when it is absent).
 [[noreturn]] void fail_at(const Document& doc, std::string_view key, std::string_view message);
 
+/// Throws InputError "FILE:LINE:COL: TABLE.KEY: message" located at `key` of the top-level table
+/// `table` (at the table when the key is absent, at the document when the table is).
+[[noreturn]] void fail_in_table(const Document& doc, std::string_view table, std::string_view key,
+                                std::string_view message);
+
 }  // namespace attiguard::scenario

@@ -263,9 +263,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
     const double c = governor::cone_cosine(sc.cones[i], sc.R_g0);
     if (!(c > sc.cones[i].delta)) {
-      fail_initial("reference", "initial reference R_g(0) is outside the navigation field's "
-                                "domain of cones[" + std::to_string(i) + "] (a_c^T R_g a_b = " +
-                                    num(c) + " <= delta = " + num(sc.cones[i].delta) + ")");
+      fail_initial("reference", cone_domain_message(root, i, sc.cones[i], c, initial && initial->has("reference")));
     }
   }
   const double V0 = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);

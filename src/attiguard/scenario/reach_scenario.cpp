@@ -96,6 +96,7 @@ reach::ReachScenario parse_reach(const Document& doc) {
     sc.attitude_cells = static_cast<int>(part->integer_or("attitude_cells", 1, 1, 50));
     sc.omega_cells = static_cast<int>(part->integer_or("omega_cells", 1, 1, 50));
     sc.threads = static_cast<int>(part->integer_or("threads", 0, 0, 256));
+    require_cell_budget(*part, part->has("omega_cells") ? "omega_cells" : "attitude_cells", sc.attitude_cells, sc.omega_cells, s.steps);
   }
   if (const auto snd = root.optional_table("soundness")) {
     declare(*snd, {"samples", "seed", "step"});

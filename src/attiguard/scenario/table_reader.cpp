@@ -3,6 +3,7 @@
 // Rotations and inertia matrices are in rotation_value.cpp and inertia_value.cpp.
 
 #include "attiguard/scenario/table_reader.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -181,7 +182,11 @@ double TableReader::number(std::string_view key, const NumberRule& rule) const {
 
 double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule) const {
   const toml::node* n = take(key);
-  return n == nullptr ? fallback : read_number(shared_->file, *n, key_path(key), rule);
+  if (n == nullptr) {
+    DefaultsRecorder::record(key_path(key), fallback);
+    return fallback;
+  }
+  return read_number(shared_->file, *n, key_path(key), rule);
 }
 
 long TableReader::integer(std::string_view key, long min, long max) const {
@@ -203,12 +208,17 @@ long TableReader::integer(std::string_view key, long min, long max) const {
 }
 
 long TableReader::integer_or(std::string_view key, long fallback, long min, long max) const {
-  return take(key) == nullptr ? fallback : integer(key, min, max);
+  if (take(key) == nullptr) {
+    DefaultsRecorder::record(key_path(key), static_cast<std::int64_t>(fallback));
+    return fallback;
+  }
+  return integer(key, min, max);
 }
 
 bool TableReader::boolean_or(std::string_view key, bool fallback) const {
   const toml::node* n = take(key);
   if (n == nullptr) {
+    DefaultsRecorder::record(key_path(key), fallback);
     return fallback;
   }
   const auto* b = n->as_boolean();
@@ -247,7 +257,11 @@ std::string TableReader::string(std::string_view key,
 
 std::string TableReader::string_or(std::string_view key, std::string_view fallback,
                                    std::span<const std::string_view> allowed) const {
-  return take(key) == nullptr ? std::string(fallback) : string(key, allowed);
+  if (take(key) == nullptr) {
+    DefaultsRecorder::record(key_path(key), std::string(fallback));
+    return std::string(fallback);
+  }
+  return string(key, allowed);
 }
 
 Eigen::Vector3d TableReader::vector3(std::string_view key) const {
@@ -260,7 +274,13 @@ Eigen::Vector3d TableReader::vector3(std::string_view key) const {
 }
 
 Eigen::Vector3d TableReader::direction(std::string_view key) const {
-  const Eigen::Vector3d v = vector3(key);
+  // Scaled by the largest component first, so that [1e300, 1e300, 0] or [1e-300, 0, 0] (whose
+  // norm over- or underflows) are the directions they name.
+  const Eigen::Vector3d raw = vector3(key);
+  const double raw_norm = raw.norm();
+  const double scale = raw.cwiseAbs().maxCoeff();
+  const bool representable = std::isfinite(raw_norm) && raw_norm >= 1e-150;
+  const Eigen::Vector3d v = representable || !(scale > 0.0) ? raw : Eigen::Vector3d(raw / scale);
   const double norm = v.norm();
   if (!(norm > 0.0) || !std::isfinite(norm)) {
     fail(key, "must be a non-zero direction, got [" + format_number(v.x()) + ", " +

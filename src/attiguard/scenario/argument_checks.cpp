@@ -1,0 +1,73 @@
+// Library arguments validated by the scenario readers (docs/python.md, "Validation").
+
+#include "attiguard/scenario/argument_checks.hpp"
+
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/table_reader.hpp"
+
+namespace attiguard::scenario {
+
+namespace {
+
+nlohmann::json rows_of(const lie::Mat3& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({M(r, 0), M(r, 1), M(r, 2)});
+  return rows;
+}
+
+nlohmann::json vector_of(const lie::Vec3& v) { return {v(0), v(1), v(2)}; }
+
+}  // namespace
+
+governor::ConeConstraint checked_cone(const nlohmann::json& cone, const std::string& label) {
+  const Document doc = document_from_json({{"cone", cone}}, label);
+  const TableReader root(doc);
+  const TableReader t = root.table("cone");
+  const governor::ConeConstraint c = parse_cone(t);
+  t.finish();
+  return c;
+}
+
+governor::GovernorParams checked_governor_params(const nlohmann::json& args, const std::string& label) {
+  const Document doc = document_from_json(args, label);
+  const TableReader root(doc);
+  declare(root, {"governor", "control", "erg", "inertia"});
+  governor::GovernorParams params;
+  params.J = root.inertia("inertia");
+  (void)parse_governor_block(root, params);
+  root.finish();
+  return params;
+}
+
+governor::AttitudeGovernor checked_governor(const governor::GovernorParams& params,
+                                            const std::vector<governor::ConeConstraint>& cones,
+                                            const std::string& label) {
+  const Document doc = document_from_json(nlohmann::json::object(), label);
+  return make_governor(TableReader(doc), "", params, cones);
+}
+
+lie::Mat3 checked_rotation_matrix(const lie::Mat3& R, const std::string& key, const std::string& label) {
+  const Document doc = document_from_json({{key, {{"matrix", rows_of(R)}}}}, label);
+  try {
+    return TableReader(doc).rotation(key);
+  } catch (const InputError& e) {  // the argument is the matrix itself: "R: …", not "R.matrix: …"
+    std::string m = e.what();
+    const std::string form = ": " + key + ".matrix:";
+    if (const auto at = m.find(form); at != std::string::npos) m.replace(at, form.size(), ": " + key + ":");
+    throw InputError(m);
+  }
+}
+
+lie::Vec3 checked_vector3(const lie::Vec3& v, const std::string& key, const std::string& label) {
+  const Document doc = document_from_json({{key, vector_of(v)}}, label);
+  return TableReader(doc).vector3(key);
+}
+
+double checked_number(double x, const std::string& key, bool positive, const std::string& label) {
+  const Document doc = document_from_json({{key, x}}, label);
+  return TableReader(doc).number(key, positive ? NumberRule::positive() : NumberRule::non_negative());
+}
+
+}  // namespace attiguard::scenario

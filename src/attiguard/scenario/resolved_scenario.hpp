@@ -1,0 +1,56 @@
+#pragma once
+/// @file resolved_scenario.hpp
+/// The resolved scenario (docs/conventions.md, "Outputs"): the scenario file with the defaults
+/// its readers used filled in, written beside each output as scenario.resolved.toml so that a
+/// result records exactly what it was computed from.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "attiguard/scenario/document.hpp"
+
+namespace attiguard::scenario {
+
+/// The name of the resolved scenario in an output folder.
+inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.toml";
+
+/// A default value a reader used for an absent key.
+using DefaultValue = std::variant<double, std::int64_t, bool, std::string>;
+
+/// While alive, collects on its thread every default the TableReader accessors `number_or`,
+/// `integer_or`, `boolean_or` and `string_or` return for an absent key (key path and value).
+/// Defaults the kinds apply without such an accessor (a whole optional table left out, e.g.
+/// [erg] or an [initial] attitude) are not seen. Recorders do not nest.
+class DefaultsRecorder {
+ public:
+  DefaultsRecorder() noexcept;
+  ~DefaultsRecorder();
+  DefaultsRecorder(const DefaultsRecorder&) = delete;
+  DefaultsRecorder& operator=(const DefaultsRecorder&) = delete;
+
+  /// The defaults recorded so far, in reading order.
+  [[nodiscard]] const std::vector<std::pair<std::string, DefaultValue>>& defaults() const noexcept {
+    return defaults_;
+  }
+
+  /// Called by the readers (no effect without a recorder on this thread).
+  static void record(std::string path, DefaultValue value);
+
+ private:
+  std::vector<std::pair<std::string, DefaultValue>> defaults_;
+};
+
+/// The TOML text of `doc` with `defaults` inserted at their key paths, headed by a comment
+/// naming the source file and the attiguard version.
+[[nodiscard]] std::string resolved_toml(const Document& doc,
+                                        const std::vector<std::pair<std::string, DefaultValue>>& defaults);
+
+/// Reads `doc` with `check` (a kind's validation) under a recorder and returns resolved_toml of
+/// it. Throws what `check` throws.
+[[nodiscard]] std::string resolve_scenario(const Document& doc, void (*check)(const Document&));
+
+}  // namespace attiguard::scenario

@@ -221,8 +221,8 @@ TEST(CampaignCli, WaypointCampaignWithEngineMisalignmentCompletesEveryRun) {
   EXPECT_LT(j["figures"]["max_final_position_error"]["max"].get<double>(), 1.0);
   EXPECT_LT(j["figures"]["max_final_speed"]["max"].get<double>(), 0.01);
 
-  // An 8 deg misalignment is more than the guidance handles: runs that do not complete count
-  // as violations (`completed` false), with their rows kept.
+  // An 8 deg misalignment is more than the guidance handles: runs that do not complete are
+  // counted as `incomplete` outcomes, not as violations, with their rows kept.
   std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) /
                                "examples/waypoint_misalignment_campaign.toml");
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"half_angle_deg = 1.0", "half_angle_deg = 8.0"},
@@ -239,8 +239,11 @@ TEST(CampaignCli, WaypointCampaignWithEngineMisalignmentCompletesEveryRun) {
   ASSERT_EQ(r8.exit_code, 0) << r8.err;
   const auto j8 = nlohmann::json::parse(read_file(dir / "tilted/campaign.json"));
   EXPECT_EQ(j8["ok"].get<long>(), 3);
-  EXPECT_GT(j8["violations"].get<long>(), 0);
-  EXPECT_EQ(j8["violations"].get<double>(), 3.0 * (1.0 - j8["figures"]["completed"]["mean"].get<double>()));
+  EXPECT_EQ(j8["violations"].get<long>(), 0);
+  ASSERT_TRUE(j8["outcomes"].contains("incomplete")) << j8["outcomes"].dump();
+  EXPECT_GT(j8["outcomes"]["incomplete"].get<long>(), 0);
+  EXPECT_EQ(j8["outcomes"]["incomplete"].get<double>(),
+            3.0 * (1.0 - j8["figures"]["completed"]["mean"].get<double>()));
   std::filesystem::remove_all(dir);
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -334,7 +336,13 @@ TEST(CliContract, FailedReachWritesAPartialReachJson) {
   EXPECT_FALSE(fs::exists(dir / "o/reach.json"));
   const std::string status = read_file(dir / "o/reach.json.partial");
   EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
-  EXPECT_NE(status.find("no a priori enclosure"), std::string::npos) << status;
+  // The partial file records the same reason the error line gives (today: the balls outgrow
+  // one exp chart), with the exit code.
+  const auto j = nlohmann::json::parse(status);
+  EXPECT_EQ(j["exit_code"].get<int>(), 3);
+  const std::string reason = j["error"].get<std::string>();
+  EXPECT_FALSE(reason.empty());
+  EXPECT_NE(r.err.find(reason), std::string::npos) << r.err << "\n" << status;
 }
 
 // SIGINT and SIGTERM in the middle of a run leave trajectory.csv.partial (its rows so far) and

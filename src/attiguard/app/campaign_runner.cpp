@@ -137,10 +137,10 @@ RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
       return r;
     }
   }
-  // A violation: a constraint flag `*_satisfied` is false, or the mission did not complete
-  // (`completed` of kinds waypoint and mission: a waypoint not reached within the duration).
+  // A violation: a constraint flag `*_satisfied` is false. A flight that did not complete is
+  // not a violation: its `outcome` (incomplete, stalled, ...) is counted separately.
   for (const auto& [key, value] : r.summary.items()) {
-    if (value.is_boolean() && !value.get<bool>() && (key.ends_with("_satisfied") || key == "completed")) {
+    if (value.is_boolean() && !value.get<bool>() && key.ends_with("_satisfied")) {
       r.violation = true;
     }
   }

@@ -126,3 +126,35 @@ TEST(ReachNominalError, RefusesWhenTheRemainderCannotBeBounded) {
   EXPECT_FALSE(e.has_value());
   EXPECT_FALSE(why.empty());
 }
+
+// Issue 15: removing the nominal's error bound makes a crafted example fail. A single initial
+// state (zero deviation) of a torque-free asymmetric body at ~2 rad/s, with a coarse RKMK4
+// nominal (step 0.05 s, sub-steps of 0.1 s over 1 s): with ε the tube's end deviation contains
+// the exact state (reference step 1e-4 s); with ε omitted it is the rounding allowance only and
+// the exact state lies outside it.
+TEST(ReachNominalError, TubeWithoutTheNominalErrorBoundMissesTheExactSolution) {
+  const ar::RigidBodyLoop loop(ar::Vec3(1.0, 2.0, 3.0).asDiagonal(), ar::Vec3::Zero());
+  const ar::Mat3 R0 = ar::Mat3::Identity();
+  const ar::Vec3 w0(0.3, 2.0, 0.4);
+  std::vector<ar::NominalPoint> nominal;
+  std::vector<double> times;
+  for (int j = 0; j <= 10; ++j) times.push_back(0.1 * j);
+  ar::simulate(loop, R0, w0, times, 0.05, [&](std::size_t k, const ar::Mat3& R, const ar::Vec3& w) {
+    nominal.push_back({times[k], R, w});
+  });
+  ASSERT_EQ(nominal.size(), times.size());
+  const auto [R_ref, w_ref] = rkmk4(loop, R0, w0, 1.0, 1e-4);
+  const double err_R = attiguard::lie::distance(R_ref, nominal.back().R);
+  const double err_w = (w_ref - nominal.back().omega).norm();
+  ASSERT_GT(err_w, 1e-9);  // the crafted nominal is coarse enough to matter
+
+  const ar::Deviation start = ar::Deviation::Zero();
+  const ar::TubeResult with = ar::propagate_tube(loop, nominal, start);
+  EXPECT_GE(with.end(3), err_w);
+  EXPECT_GE(with.end(4), err_R);
+  for (int k = 0; k < 3; ++k) EXPECT_GE(with.end(k), std::abs(w_ref(k) - nominal.back().omega(k))) << k;
+
+  const ar::TubeResult without =
+      ar::propagate_tube(loop, nominal, start, ar::NominalErrorTerm::omitted_unsound);
+  EXPECT_LT(without.end(3), err_w) << "without the bound the tube still contains the exact state";
+}

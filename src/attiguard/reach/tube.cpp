@@ -52,7 +52,7 @@ Box3 span_box(const Box3& W, const Box3& F, double h) {
 }  // namespace
 
 TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
-                          const Deviation& start) {
+                          const Deviation& start, NominalErrorTerm term) {
   if (nominal.size() < 2) throw NumericalError("ConReach tube: needs at least two nominal points");
   TubeResult out;
   Deviation z = start.cwiseMax(0.0);
@@ -128,7 +128,7 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
          << "integrator_step";
       throw VerificationFailure(os.str());
     }
-    const Deviation& eps = step_error->bound;
+    const Deviation eps = term == NominalErrorTerm::bounded ? step_error->bound : Deviation::Zero();
     // Deviations from x*: z(s+h) ≤ exp(Mh) z(s), sup over the sub-step ≤ exp(M⁺h) z(s); from p1
     // add eps (triangle inequality, componentwise and in d). The factor and 1e-15 cover the
     // rounding of the 5×5 products.

@@ -56,11 +56,17 @@ struct TubeResult {
   AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
 };
 
+/// Whether the nominal's integration error ε enters the tube (docs/reach.md, "Nominal error
+/// bound"). Every analysis uses `bounded`; `omitted_unsound` exists only so that a test can show
+/// that without ε a crafted tube misses the exact solution (issue 15), and no scenario key sets it.
+enum class NominalErrorTerm { bounded, omitted_unsound };
+
 /// Propagates `start` (valid at nominal.front()) along the nominal points (≥ 2, increasing t).
 /// Throws NumericalError when no a priori enclosure is found (diverging tube), and
 /// VerificationFailure when the nominal's integration error cannot be bounded on a sub-step.
 [[nodiscard]] TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
-                                        const Deviation& start);
+                                        const Deviation& start,
+                                        NominalErrorTerm term = NominalErrorTerm::bounded);
 
 /// exp(M h) for a small square matrix (scaling and squaring, Taylor degree 18).
 [[nodiscard]] Eigen::MatrixXd expm(const Eigen::MatrixXd& M);

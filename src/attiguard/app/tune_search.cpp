@@ -12,6 +12,7 @@
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document_edit.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
 
 namespace attiguard::app {
 
@@ -117,18 +118,11 @@ std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nom
     throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
                                              "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
   }
-  std::vector<TuneParameter> out;
-  for (const auto& [key, down, up] : {std::tuple{"control.kp", 30.0, 30.0},
-                                      std::tuple{"control.kd", 30.0, 30.0},
-                                      std::tuple{"erg.kappa", 10.0, 100.0}}) {
-    const std::optional<double> x = scenario::number_at(nominal, key);
-    if (!x || !(*x > 0.0)) {
-      throw InputError(nominal.path.string() + ": " + key + ": attiguard tune needs a positive value "
-                                                            "to centre its default range on");
-    }
-    out.push_back({key, *x / down, *x * up});
-  }
-  return out;
+  // Centred on the values the parser reads (its defaults where the file has no key).
+  const sim::PetErgScenario sc = scenario::parse_pet_erg(nominal);
+  return {{"control.kp", sc.params.gains.kp / 30.0, sc.params.gains.kp * 30.0},
+          {"control.kd", sc.params.gains.kd / 30.0, sc.params.gains.kd * 30.0},
+          {"erg.kappa", sc.params.kappa / 10.0, sc.params.kappa * 100.0}};
 }
 
 TuneParameter parse_tune_range(const std::string& text) {
@@ -199,6 +193,7 @@ TunePoint evaluate_candidate(const scenario::Document& nominal,
   }
   p.convergence_time = number_field(summary, "convergence_time");
   p.ratio = number_field(summary, "convergence_time_over_bang_bang");
+  p.bang_bang_time = number_field(summary, "eigenaxis_bang_bang_time");
   return p;
 }
 
@@ -210,9 +205,15 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     if (!(p.min > 0.0) || !(p.min <= p.max) || !std::isfinite(p.max)) {
       throw InputError("attiguard tune: " + p.key + ": range must satisfy 0 < min <= max");
     }
-    if (!scenario::number_at(nominal, p.key) && p.key != "control.control_period") {
-      throw InputError(nominal.path.string() + ": " + p.key + ": no such number in the scenario");
-    }
+  }
+  if (scenario::scenario_kind(nominal) != "pet_erg") {
+    throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
+                                             "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
+  }
+  {  // every key can be set (a key of a table the scenario does not have is an input error)
+    std::vector<double> lows;
+    for (const TuneParameter& p : s.parameters) lows.push_back(p.min);
+    (void)tune_candidate(nominal, s.parameters, lows);
   }
   TuneResult r;
   campaign::Rng rng(campaign::run_seed(s.seed, 0));
@@ -229,13 +230,16 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     }
     return improved;
   };
-  // The scenario's own values (clamped into the box), so that the result is never worse.
-  std::vector<double> own;
-  for (const TuneParameter& p : s.parameters) {
-    own.push_back(std::clamp(scenario::number_at(nominal, p.key).value_or(p.min), p.min, p.max));
+  // The scenario as given (its own gains), for comparison; not a search point.
+  {
+    std::vector<TunePoint> own = evaluate_batch(nominal, {}, {std::vector<double>{}}, 1, s.scratch);
+    r.nominal = std::move(own.front());
+    r.nominal.phase = "nominal";
+    for (const TuneParameter& p : s.parameters) {
+      r.nominal.values.push_back(scenario::number_at(nominal, p.key).value_or(std::nan("")));
+    }
   }
-  append(evaluate_batch(nominal, s.parameters, {own}, 1, s.scratch), "nominal");
-  const long samples = std::max(1L, (s.budget - 1) / 2);
+  const long samples = std::max(1L, s.budget / 2);
   append(evaluate_batch(nominal, s.parameters, latin_hypercube(s.parameters, samples, rng),
                         s.threads, s.scratch),
          "sample");
@@ -253,13 +257,10 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
                                  r.best ? "refine" : "sample");
     if (!improved) radius = std::max(0.01, radius / 2.0);
   }
+  r.eigenaxis_bang_bang_time = r.nominal.bang_bang_time;  // a property of the slew, not the gains
   for (const TunePoint& p : r.points) {
-    if (p.ratio && p.convergence_time && *p.ratio > 0.0) {
-      r.eigenaxis_bang_bang_time = *p.convergence_time / *p.ratio;
-      break;
-    }
+    if (!r.eigenaxis_bang_bang_time) r.eigenaxis_bang_bang_time = p.bang_bang_time;
   }
-  r.nominal = point_json(s.parameters, r.points.front());
   return r;
 }
 
@@ -270,14 +271,14 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
   j["parameters"] = space;
   j["budget"] = s.budget;
   j["seed"] = s.seed;
-  j["search"] = "scenario's own values, Latin hypercube (log-uniform) of (budget-1)/2 points, then "
+  j["search"] = "Latin hypercube (log-uniform) of budget/2 points, then "
                 "batches perturbed around the fastest admissible point";
   long admissible = 0;
   for (const TunePoint& p : r.points) admissible += p.admissible() ? 1 : 0;
   j["evaluated"] = r.points.size();
   j["admissible"] = admissible;
   j["eigenaxis_bang_bang_time"] = r.eigenaxis_bang_bang_time ? nlohmann::json(*r.eigenaxis_bang_bang_time) : nlohmann::json(nullptr);
-  j["nominal"] = r.nominal;
+  j["nominal"] = point_json(s.parameters, r.nominal);
   if (r.best) {
     const TunePoint& b = r.points[*r.best];
     j["outcome"] = "found";

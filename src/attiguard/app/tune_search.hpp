@@ -36,7 +36,7 @@ struct TuneSettings {
 /// One evaluated candidate.
 struct TunePoint {
   long index{0};
-  std::string phase;                 ///< "sample" or "refine"
+  std::string phase;                 ///< "sample", "refine" (or "nominal": the scenario as given)
   std::vector<double> values;        ///< TuneSettings::parameters order
   std::string status;                ///< "ok", "rejected" (the parser refused it), "failed"
   std::string outcome;               ///< summary outcome when ok
@@ -44,6 +44,7 @@ struct TunePoint {
   long violations{0};                ///< `*_satisfied` flags that are false
   std::optional<double> convergence_time;
   std::optional<double> ratio;       ///< convergence_time_over_bang_bang
+  std::optional<double> bang_bang_time;  ///< eigenaxis_bang_bang_time of the slew
   /// ok, converged and no violation: a guaranteed manoeuvre.
   [[nodiscard]] bool admissible() const noexcept {
     return status == "ok" && outcome == "converged" && violations == 0 && convergence_time.has_value();
@@ -55,10 +56,10 @@ struct TuneResult {
   std::vector<TunePoint> points;     ///< in evaluation order (index)
   std::optional<std::size_t> best;   ///< fastest admissible point, if any
   std::optional<double> eigenaxis_bang_bang_time;  ///< from the nominal run's summary
-  nlohmann::json nominal;            ///< the nominal scenario's point (its own gains)
+  TunePoint nominal;                 ///< the scenario as given (values: its keys, NaN if absent)
 };
 
-/// Default search space around the scenario's own values: control.kp and control.kd in
+/// Default search space around the scenario's values (as parsed: the defaults where a key is absent): control.kp and control.kd in
 /// [x/30, 30 x], erg.kappa in [κ/10, 100 κ]. Throws InputError when the scenario is not pet_erg
 /// or a key is missing.
 [[nodiscard]] std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal);

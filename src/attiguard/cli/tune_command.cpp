@@ -33,11 +33,8 @@ void tune_command(const TuneArguments& args) {
   const scenario::Document nominal =
       loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
   app::TuneSettings s;
-  s.parameters = app::default_tune_parameters(nominal);
-  if (!args.ranges.empty()) {
-    s.parameters.clear();
-    for (const std::string& r : args.ranges) s.parameters.push_back(app::parse_tune_range(r));
-  }
+  for (const std::string& r : args.ranges) s.parameters.push_back(app::parse_tune_range(r));
+  if (s.parameters.empty()) s.parameters = app::default_tune_parameters(nominal);
   s.budget = args.budget;
   s.seed = args.seed;
   s.threads = args.threads;
@@ -70,7 +67,7 @@ void tune_command(const TuneArguments& args) {
   std::cout << "\nconvergence_time: " << *b.convergence_time << " s";
   if (b.ratio) std::cout << " (" << *b.ratio << " x the eigenaxis bang-bang time)";
   std::cout << '\n';
-  const auto& own = r.points.front();
+  const auto& own = r.nominal;
   if (own.admissible()) {
     std::cout << "scenario's own values: " << *own.convergence_time << " s";
     if (own.ratio) std::cout << " (" << *own.ratio << " x)";

@@ -29,6 +29,10 @@ void set_number(Document& doc, std::string_view path, double value) {
   }
   const std::size_t dot = path.rfind('.');
   const std::string_view parent = dot == std::string_view::npos ? std::string_view{} : path.substr(0, dot);
+  if (!parent.empty() && parent.find_first_of(".[") == std::string_view::npos &&
+      !root.contains(parent)) {
+    root.insert_or_assign(std::string(parent), toml::table{});  // e.g. [erg] absent: its defaults
+  }
   const toml::node* p = parent.empty() ? &root : resolve_key_path(root, parent);
   if (p == nullptr || !p->is_table() || split_key_path(path).empty()) {
     throw InputError(doc.path.string() + ": " + std::string(path) + ": no such table in the scenario");

@@ -15,7 +15,7 @@ namespace attiguard::scenario {
 [[nodiscard]] std::optional<double> number_at(const Document& doc, std::string_view path);
 
 /// Sets the number at `path`: replaces it, or inserts it when its table exists and the key is
-/// absent (e.g. `[control] control_period`). Throws InputError naming the path when the table
+/// absent (e.g. `[control] control_period`), creating a missing top-level table (`[erg]`). Throws InputError naming the path when the table
 /// is missing or the key holds a value that is not a number.
 void set_number(Document& doc, std::string_view path, double value);
 

@@ -36,11 +36,13 @@ TuneSettings settings(std::vector<TuneParameter> p, long budget, int threads, co
   return s;
 }
 
-// The paper scenario (slew of 90 deg, one keep-in cone): the search finds admissible points,
+// The paper scenario (slew of 90 deg, one keep-in cone; gains around the paper's): the search
+// finds admissible points,
 // the best is the fastest of them, and its values are inside the box.
 TEST(TuneSearch, BestIsTheFastestAdmissiblePointInsideTheBox) {
   const scenario::Document doc = source_file("examples/pet_erg_paper.toml");
-  const TuneSettings s = settings(default_tune_parameters(doc), 16, 2, "best");
+  const TuneSettings s =
+      settings({{"control.kp", 2.0, 10.0}, {"control.kd", 0.5, 3.0}, {"erg.kappa", 0.5, 5.0}}, 16, 2, "best");
   const TuneResult r = tune_search(doc, s);
   ASSERT_EQ(r.points.size(), 16u);
   ASSERT_TRUE(r.best.has_value());
@@ -116,6 +118,22 @@ TEST(TuneSearch, CandidateSetsTheKeysAndAddsAnAbsentOne) {
   EXPECT_EQ(scenario::number_at(c, "control.kp"), 2.5);
   EXPECT_EQ(scenario::number_at(c, "control.control_period"), 0.1);
   EXPECT_EQ(scenario::number_at(doc, "control.kp"), 5.0);  // the nominal is not changed
+}
+
+// The default space is centred on the parsed values (the parser's defaults for absent keys).
+TEST(TuneSearch, DefaultSpaceIsCentredOnTheParsedValues) {
+  const auto p = default_tune_parameters(source_file("tests/data/campaign/pet_erg_stalling.toml"));
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_EQ(p[0].key, "control.kp");
+  EXPECT_DOUBLE_EQ(p[0].min, 5.0 / 30.0);
+  EXPECT_DOUBLE_EQ(p[0].max, 150.0);
+  EXPECT_EQ(p[2].key, "erg.kappa");  // no [erg] in that file: kappa = 1
+  EXPECT_DOUBLE_EQ(p[2].min, 0.1);
+  EXPECT_DOUBLE_EQ(p[2].max, 100.0);
+  EXPECT_EQ(p[3].key, "erg.sampling_period");  // T_s = 0.5 s
+  EXPECT_DOUBLE_EQ(p[3].max, 2.0);
+  EXPECT_EQ(p[4].key, "erg.c_gamma");
+  EXPECT_DOUBLE_EQ(p[4].min, 1.01);
 }
 
 TEST(TuneSearch, BadRangesAndSpacesAreInputErrors) {

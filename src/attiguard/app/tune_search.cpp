@@ -122,7 +122,9 @@ std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nom
   const sim::PetErgScenario sc = scenario::parse_pet_erg(nominal);
   return {{"control.kp", sc.params.gains.kp / 30.0, sc.params.gains.kp * 30.0},
           {"control.kd", sc.params.gains.kd / 30.0, sc.params.gains.kd * 30.0},
-          {"erg.kappa", sc.params.kappa / 10.0, sc.params.kappa * 100.0}};
+          {"erg.kappa", sc.params.kappa / 10.0, sc.params.kappa * 100.0},
+          {"erg.sampling_period", sc.params.Ts / 25.0, sc.params.Ts * 4.0},
+          {"erg.c_gamma", 1.01, std::max(10.0, sc.params.c_gamma)}};
 }
 
 TuneParameter parse_tune_range(const std::string& text) {
@@ -255,7 +257,10 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     }
     const bool improved = append(evaluate_batch(nominal, s.parameters, batch, s.threads, s.scratch),
                                  r.best ? "refine" : "sample");
-    if (!improved) radius = std::max(0.01, radius / 2.0);
+    // Shrink the neighbourhood after a batch without progress; once it is tiny, restart it
+    // wide around the best (escapes a narrow valley without losing the best point).
+    if (!improved) radius *= 0.7;
+    if (radius < 0.01) radius = 0.25;
   }
   r.eigenaxis_bang_bang_time = r.nominal.bang_bang_time;  // a property of the slew, not the gains
   for (const TunePoint& p : r.points) {
@@ -272,7 +277,7 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
   j["budget"] = s.budget;
   j["seed"] = s.seed;
   j["search"] = "Latin hypercube (log-uniform) of budget/2 points, then "
-                "batches perturbed around the fastest admissible point";
+                "batches perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
   long admissible = 0;
   for (const TunePoint& p : r.points) admissible += p.admissible() ? 1 : 0;
   j["evaluated"] = r.points.size();

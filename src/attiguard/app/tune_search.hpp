@@ -59,9 +59,10 @@ struct TuneResult {
   TunePoint nominal;                 ///< the scenario as given (values: its keys, NaN if absent)
 };
 
-/// Default search space around the scenario's values (as parsed: the defaults where a key is absent): control.kp and control.kd in
-/// [x/30, 30 x], erg.kappa in [κ/10, 100 κ]. Throws InputError when the scenario is not pet_erg
-/// or a key is missing.
+/// Default search space around the scenario's values (as parsed: the defaults where a key is
+/// absent): control.kp and control.kd in [x/30, 30 x], erg.kappa in [κ/10, 100 κ],
+/// erg.sampling_period in [T_s/25, 4 T_s], erg.c_gamma in [1.01, max(10, c_Γ)]
+/// (docs/pet-erg.md, section 15). Throws InputError when the scenario is not pet_erg.
 [[nodiscard]] std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal);
 
 /// Parses "KEY=MIN:MAX" (docs/pet-erg.md, "Tuning"); throws InputError naming the option.

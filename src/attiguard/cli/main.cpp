@@ -188,7 +188,7 @@ int run(int argc, char** argv) {
 
   attiguard::cli::TuneArguments tune_args;  // gain search: cli/tune_command.cpp
   CLI::App* tune_cmd = app.add_subcommand(
-      "tune", "Search k_p, k_d, kappa of a pet_erg scenario for the fastest converged manoeuvre "
+      "tune", "Search k_p, k_d, kappa, T_s, c_Gamma of a pet_erg scenario for the fastest converged manoeuvre "
               "with every constraint kept; write tune.json and best.toml into DIR (docs/pet-erg.md)");
   tune_cmd->add_option("SCENARIO", tune_args.scenario, "pet_erg scenario file")->required()->type_name("FILE");
   tune_cmd->add_option("--out", tune_args.out_dir, "Output directory (created if missing)")
@@ -200,7 +200,7 @@ int run(int argc, char** argv) {
   tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default 1)")->type_name("S");
   tune_cmd->add_option("--range", tune_args.ranges,
                        "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces the default "
-                       "control.kp, control.kd, erg.kappa ranges)")
+                       "control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
       ->type_name("KEY=MIN:MAX");
   tune_cmd->add_flag("!--no-plot", tune_args.plot, "Do not write DIR/tune_tradeoff.png");
 

@@ -40,10 +40,11 @@ TEST(DocumentEdit, ReadsAndSetsNumbersByKeyPath) {
 TEST(DocumentEdit, TomlTextParsesBackToTheSameNumbers) {
   Document d = parse_document(kText, "t.toml");
   set_number(d, "control.kd", 0.1 + 0.2);
-  const Document back = parse_document(document_toml(d), "back.toml");
+  const Document back = parse_document(document_text(d), "back.toml");
   EXPECT_EQ(number_at(back, "control.kd"), 0.1 + 0.2);  // exact round trip
   EXPECT_EQ(number_at(back, "cones[0].half_angle_deg"), 20.0);
   EXPECT_EQ(scenario_kind(back), "pet_erg");
+  EXPECT_EQ(scenario_file_name("best"), "best.toml");
 }
 
 }  // namespace

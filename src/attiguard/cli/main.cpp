@@ -189,7 +189,7 @@ int run(int argc, char** argv) {
   attiguard::cli::TuneArguments tune_args;  // gain search: cli/tune_command.cpp
   CLI::App* tune_cmd = app.add_subcommand(
       "tune", "Search k_p, k_d, kappa, T_s, c_Gamma of a pet_erg scenario for the fastest converged manoeuvre "
-              "with every constraint kept; write tune.json and best.toml into DIR (docs/pet-erg.md)");
+              "with every constraint kept; write tune.json and the best scenario into DIR (docs/pet-erg.md)");
   tune_cmd->add_option("SCENARIO", tune_args.scenario, "pet_erg scenario file")->required()->type_name("FILE");
   tune_cmd->add_option("--out", tune_args.out_dir, "Output directory (created if missing)")
       ->required()

@@ -76,13 +76,13 @@ void tune_command(const TuneArguments& args) {
     std::cout << "scenario's own values: " << own.status
               << (own.outcome.empty() ? "" : ", " + own.outcome) << '\n';
   }
-  const auto best_path = args.out_dir / "best.toml";
+  const auto best_path = args.out_dir / scenario::scenario_file_name("best");
   {
     const scenario::Document best = app::tune_candidate(nominal, s.parameters, b.values);
     std::ofstream out(best_path, std::ios::binary | std::ios::trunc);
     out << "# Written by attiguard tune from " << args.scenario.filename().string()
         << " (docs/pet-erg.md, section \"Tuning\")\n"
-        << scenario::document_toml(best);
+        << scenario::document_text(best);
   }
   std::cout << "Wrote:\n  " << tune_path.string() << "\n  " << best_path.string() << '\n';
   if (args.plot) {

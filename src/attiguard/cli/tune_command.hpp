@@ -21,7 +21,7 @@ struct TuneArguments {
   bool plot{true};
 };
 
-/// Searches the gains; writes DIR/tune.json, DIR/best.toml and DIR/tune_tradeoff.png. Throws
+/// Searches the gains; writes DIR/tune.json, DIR/best (the best scenario) and DIR/tune_tradeoff.png. Throws
 /// VerificationFailure (exit 4) when no evaluated point converged with every constraint kept.
 void tune_command(const TuneArguments& args);
 

@@ -44,7 +44,9 @@ void set_number(Document& doc, std::string_view path, double value) {
   }
 }
 
-std::string document_toml(const Document& doc) {
+std::string scenario_file_name(std::string_view stem) { return std::string(stem) + ".toml"; }
+
+std::string document_text(const Document& doc) {
   std::ostringstream out;
   out << toml::toml_formatter(root_table(doc));
   return out.str() + "\n";

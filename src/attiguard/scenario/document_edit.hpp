@@ -19,7 +19,11 @@ namespace attiguard::scenario {
 /// is missing or the key holds a value that is not a number.
 void set_number(Document& doc, std::string_view path, double value);
 
-/// The document's tables as TOML text (comments and key order of the file are not kept).
-[[nodiscard]] std::string document_toml(const Document& doc);
+/// The document's tables as scenario-file text (comments and key order of the file are not kept).
+[[nodiscard]] std::string document_text(const Document& doc);
+
+/// The file name of a scenario called `stem` ("best" -> "best.toml"): the format's extension is
+/// scenario/'s concern (docs/architecture.md, "Layers").
+[[nodiscard]] std::string scenario_file_name(std::string_view stem);
 
 }  // namespace attiguard::scenario

@@ -22,6 +22,7 @@
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/reach_command.hpp"
+#include "attiguard/cli/tune_command.hpp"
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/version.hpp"
@@ -213,6 +214,24 @@ int run(int argc, char** argv) {
   aem_cmd->add_flag("--rates", aem_args.rates, "Angular rates as well (QUATERNION/RATE)");
   aem_cmd->add_option("--out", aem_args.out, "Output file (default DIR/attitude.aem)")->type_name("FILE");
 
+  attiguard::cli::TuneArguments tune_args;  // gain search: cli/tune_command.cpp
+  CLI::App* tune_cmd = app.add_subcommand(
+      "tune", "Search k_p, k_d, kappa, T_s, c_Gamma of a pet_erg scenario for the fastest converged manoeuvre "
+              "with every constraint kept; write tune.json and the best scenario into DIR (docs/pet-erg.md)");
+  tune_cmd->add_option("SCENARIO", tune_args.scenario, "pet_erg scenario file")->required()->type_name("FILE");
+  tune_cmd->add_option("--out", tune_args.out_dir, "Output directory (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  tune_cmd->add_option("--threads", tune_args.threads, "Worker threads")->type_name("T");
+  tune_cmd->add_option("--budget", tune_args.budget, "Runs in all (default 64)")->type_name("RUNS");
+  std::string tune_seed_text = "1";
+  tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default 1)")->type_name("S");
+  tune_cmd->add_option("--range", tune_args.ranges,
+                       "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces the default "
+                       "control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
+      ->type_name("KEY=MIN:MAX");
+  tune_cmd->add_flag("!--no-plot", tune_args.plot, "Do not write DIR/tune_tradeoff.png");
+
   std::filesystem::path view_dir;  // browser viewer: cli/view_command.cpp
   CLI::App* view_cmd = app.add_subcommand(
       "view", "Write DIR/view.html: a self-contained 3-D browser view of a result folder (docs/viewer.md)");
@@ -243,6 +262,7 @@ int run(int argc, char** argv) {
     return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   }
   if (campaign_cmd->parsed()) campaign_args.seed = parse_seed(seed_text);
+  if (tune_cmd->parsed()) tune_args.seed = parse_seed(tune_seed_text);
   attiguard::scenario::set_work_limits(limits);
 
   if (run_cmd->parsed()) {
@@ -253,6 +273,8 @@ int run(int argc, char** argv) {
     attiguard::cli::reach_command(reach_args);
   } else if (campaign_cmd->parsed()) {
     attiguard::cli::campaign_command(campaign_args);
+  } else if (tune_cmd->parsed()) {
+    attiguard::cli::tune_command(tune_args);
   } else if (view_cmd->parsed()) {
     attiguard::cli::view_command(view_dir);
   } else if (aem_cmd->parsed()) {

@@ -1,0 +1,305 @@
+// Gain search of a pet_erg scenario (tune_search.hpp; docs/pet-erg.md, section "Tuning").
+
+#include "attiguard/app/tune_search.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <charconv>
+#include <thread>
+
+#include "attiguard/app/kinds.hpp"
+#include "attiguard/campaign/seed.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/document_edit.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+
+namespace attiguard::app {
+
+namespace {
+
+std::string one_line(std::string s) {
+  for (char& ch : s) {
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  }
+  return s;
+}
+
+std::optional<double> number_field(const nlohmann::json& summary, const char* key) {
+  const auto it = summary.find(key);
+  if (it == summary.end() || !it->is_number()) return std::nullopt;
+  return it->get<double>();
+}
+
+/// Evaluates `candidates` on `threads` workers; result i belongs to candidate i.
+std::vector<TunePoint> evaluate_batch(const scenario::Document& nominal,
+                                      const std::vector<TuneParameter>& parameters,
+                                      const std::vector<std::vector<double>>& candidates,
+                                      int threads, const std::filesystem::path& scratch) {
+  std::vector<TunePoint> out(candidates.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&](int worker) {
+    const std::filesystem::path dir = scratch / ("worker" + std::to_string(worker));
+    for (std::size_t i = next++; i < candidates.size(); i = next++) {
+      out[i] = evaluate_candidate(nominal, parameters, candidates[i], dir);
+    }
+  };
+  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(candidates.size())));
+  if (workers == 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (int w = 0; w < workers; ++w) pool.emplace_back(work, w);
+    for (auto& t : pool) t.join();
+  }
+  return out;
+}
+
+/// Latin hypercube of n points in the log box: one point per stratum of each axis, strata
+/// permuted independently (Fisher–Yates with `rng`).
+std::vector<std::vector<double>> latin_hypercube(const std::vector<TuneParameter>& p, long n,
+                                                 campaign::Rng& rng) {
+  std::vector<std::vector<double>> pts(static_cast<std::size_t>(n), std::vector<double>(p.size()));
+  for (std::size_t d = 0; d < p.size(); ++d) {
+    std::vector<long> perm(static_cast<std::size_t>(n));
+    for (long i = 0; i < n; ++i) perm[static_cast<std::size_t>(i)] = i;
+    for (long i = n - 1; i > 0; --i) {
+      const auto j = static_cast<long>(rng.uniform01() * static_cast<double>(i + 1));
+      std::swap(perm[static_cast<std::size_t>(i)], perm[static_cast<std::size_t>(std::min(j, i))]);
+    }
+    const double lo = std::log(p[d].min), hi = std::log(p[d].max);
+    for (long i = 0; i < n; ++i) {
+      const double u = (static_cast<double>(perm[static_cast<std::size_t>(i)]) + rng.uniform01()) /
+                       static_cast<double>(n);
+      pts[static_cast<std::size_t>(i)][d] = std::exp(lo + u * (hi - lo));
+    }
+  }
+  return pts;
+}
+
+/// A point within `radius` (fraction of each log range) of `centre`, clamped to the box.
+std::vector<double> perturb(const std::vector<TuneParameter>& p, const std::vector<double>& centre,
+                            double radius, campaign::Rng& rng) {
+  std::vector<double> x(p.size());
+  for (std::size_t d = 0; d < p.size(); ++d) {
+    const double lo = std::log(p[d].min), hi = std::log(p[d].max);
+    const double v = std::log(centre[d]) + radius * (hi - lo) * rng.uniform(-1.0, 1.0);
+    x[d] = std::exp(std::clamp(v, lo, hi));
+  }
+  return x;
+}
+
+bool faster(const TunePoint& a, const std::optional<std::size_t>& best,
+            const std::vector<TunePoint>& points) {
+  return a.admissible() && (!best || *a.convergence_time < *points[*best].convergence_time);
+}
+
+nlohmann::json point_json(const std::vector<TuneParameter>& parameters, const TunePoint& p) {
+  nlohmann::json j;
+  j["index"] = p.index;
+  j["phase"] = p.phase;
+  nlohmann::json values = nlohmann::json::object();
+  for (std::size_t d = 0; d < parameters.size(); ++d) values[parameters[d].key] = p.values[d];
+  j["values"] = values;
+  j["status"] = p.status;
+  j["outcome"] = p.outcome.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.outcome);
+  j["reason"] = p.reason;
+  j["violations"] = p.violations;
+  j["admissible"] = p.admissible();
+  j["convergence_time"] = p.convergence_time ? nlohmann::json(*p.convergence_time) : nlohmann::json(nullptr);
+  j["convergence_time_over_bang_bang"] = p.ratio ? nlohmann::json(*p.ratio) : nlohmann::json(nullptr);
+  return j;
+}
+
+}  // namespace
+
+std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal) {
+  if (scenario::scenario_kind(nominal) != "pet_erg") {
+    throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
+                                             "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
+  }
+  // Centred on the values the parser reads (its defaults where the file has no key).
+  const sim::PetErgScenario sc = scenario::parse_pet_erg(nominal);
+  return {{"control.kp", sc.params.gains.kp / 30.0, sc.params.gains.kp * 30.0},
+          {"control.kd", sc.params.gains.kd / 30.0, sc.params.gains.kd * 30.0},
+          {"erg.kappa", sc.params.kappa / 10.0, sc.params.kappa * 100.0},
+          {"erg.sampling_period", sc.params.Ts / 25.0, sc.params.Ts * 4.0},
+          {"erg.c_gamma", 1.01, std::max(10.0, sc.params.c_gamma)}};
+}
+
+TuneParameter parse_tune_range(const std::string& text) {
+  const auto bad = [&](const std::string& why) {
+    return InputError("--range '" + text + "': " + why + " (expected KEY=MIN:MAX, 0 < MIN <= MAX)");
+  };
+  const std::size_t eq = text.find('='), colon = text.find(':', eq == std::string::npos ? 0 : eq);
+  if (eq == std::string::npos || eq == 0 || colon == std::string::npos) throw bad("malformed");
+  TuneParameter p;
+  p.key = text.substr(0, eq);
+  const auto parse = [&](std::size_t from, std::size_t to, double& out) {
+    const char* b = text.data() + from;
+    const char* e = text.data() + to;
+    const auto r = std::from_chars(b, e, out);
+    if (r.ec != std::errc{} || r.ptr != e) throw bad("not a number");
+  };
+  parse(eq + 1, colon, p.min);
+  parse(colon + 1, text.size(), p.max);
+  if (!std::isfinite(p.min) || !std::isfinite(p.max) || !(p.min > 0.0) || !(p.min <= p.max)) {
+    throw bad("bounds");
+  }
+  return p;
+}
+
+scenario::Document tune_candidate(const scenario::Document& nominal,
+                                  const std::vector<TuneParameter>& parameters,
+                                  const std::vector<double>& values) {
+  scenario::Document d = nominal;
+  for (std::size_t i = 0; i < parameters.size(); ++i) scenario::set_number(d, parameters[i].key, values[i]);
+  return d;
+}
+
+TunePoint evaluate_candidate(const scenario::Document& nominal,
+                             const std::vector<TuneParameter>& parameters,
+                             const std::vector<double>& values, const std::filesystem::path& scratch) {
+  TunePoint p;
+  p.values = values;
+  const KindHandler& handler = handler_for(nominal);
+  scenario::Document doc;
+  try {
+    doc = tune_candidate(nominal, parameters, values);
+    handler.check(doc);
+  } catch (const std::exception& e) {
+    p.status = "rejected";
+    p.reason = one_line(e.what());
+    return p;
+  }
+  nlohmann::json summary;
+  try {
+    RunOptions options;
+    options.out_dir = scratch;
+    options.write_files = false;
+    summary = handler.run(doc, options);
+  } catch (const std::exception& e) {
+    p.status = "failed";
+    p.reason = one_line(e.what());
+    return p;
+  }
+  p.status = "ok";
+  if (const auto it = summary.find("outcome"); it != summary.end() && it->is_string()) {
+    p.outcome = it->get<std::string>();
+  }
+  if (const auto it = summary.find("outcome_reason"); it != summary.end() && it->is_string()) {
+    p.reason = it->get<std::string>();
+  }
+  for (const auto& [key, value] : summary.items()) {
+    if (value.is_boolean() && !value.get<bool>() && key.ends_with("_satisfied")) ++p.violations;
+  }
+  p.convergence_time = number_field(summary, "convergence_time");
+  p.ratio = number_field(summary, "convergence_time_over_bang_bang");
+  p.bang_bang_time = number_field(summary, "eigenaxis_bang_bang_time");
+  return p;
+}
+
+TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s) {
+  if (s.parameters.empty()) throw InputError("attiguard tune: no parameter to search");
+  if (s.budget < 4) throw InputError("--budget: must be at least 4 runs");
+  if (s.threads < 1) throw InputError("--threads: must be at least 1");
+  for (const TuneParameter& p : s.parameters) {
+    if (!(p.min > 0.0) || !(p.min <= p.max) || !std::isfinite(p.max)) {
+      throw InputError("attiguard tune: " + p.key + ": range must satisfy 0 < min <= max");
+    }
+  }
+  if (scenario::scenario_kind(nominal) != "pet_erg") {
+    throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
+                                             "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
+  }
+  {  // every key can be set (a key of a table the scenario does not have is an input error)
+    std::vector<double> lows;
+    for (const TuneParameter& p : s.parameters) lows.push_back(p.min);
+    (void)tune_candidate(nominal, s.parameters, lows);
+  }
+  TuneResult r;
+  campaign::Rng rng(campaign::run_seed(s.seed, 0));
+  const auto append = [&](std::vector<TunePoint> batch, const char* phase) {
+    bool improved = false;
+    for (TunePoint& p : batch) {
+      p.index = static_cast<long>(r.points.size());
+      p.phase = phase;
+      if (faster(p, r.best, r.points)) {
+        r.best = r.points.size();
+        improved = true;
+      }
+      r.points.push_back(std::move(p));
+    }
+    return improved;
+  };
+  // The scenario as given (its own gains), for comparison; not a search point.
+  {
+    std::vector<TunePoint> own = evaluate_batch(nominal, {}, {std::vector<double>{}}, 1, s.scratch);
+    r.nominal = std::move(own.front());
+    r.nominal.phase = "nominal";
+    for (const TuneParameter& p : s.parameters) {
+      r.nominal.values.push_back(scenario::number_at(nominal, p.key).value_or(std::nan("")));
+    }
+  }
+  const long samples = std::max(1L, s.budget / 2);
+  append(evaluate_batch(nominal, s.parameters, latin_hypercube(s.parameters, samples, rng),
+                        s.threads, s.scratch),
+         "sample");
+  double radius = 0.25;
+  const long batch_size = std::max<long>(4, s.threads);
+  while (static_cast<long>(r.points.size()) < s.budget) {
+    const long n = std::min(batch_size, s.budget - static_cast<long>(r.points.size()));
+    std::vector<std::vector<double>> batch;
+    if (r.best) {
+      for (long i = 0; i < n; ++i) batch.push_back(perturb(s.parameters, r.points[*r.best].values, radius, rng));
+    } else {
+      batch = latin_hypercube(s.parameters, n, rng);  // nothing admissible yet: keep exploring
+    }
+    const bool improved = append(evaluate_batch(nominal, s.parameters, batch, s.threads, s.scratch),
+                                 r.best ? "refine" : "sample");
+    // Shrink the neighbourhood after a batch without progress; once it is tiny, restart it
+    // wide around the best (escapes a narrow valley without losing the best point).
+    if (!improved) radius *= 0.7;
+    if (radius < 0.01) radius = 0.25;
+  }
+  r.eigenaxis_bang_bang_time = r.nominal.bang_bang_time;  // a property of the slew, not the gains
+  for (const TunePoint& p : r.points) {
+    if (!r.eigenaxis_bang_bang_time) r.eigenaxis_bang_bang_time = p.bang_bang_time;
+  }
+  return r;
+}
+
+nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
+  nlohmann::json j;
+  nlohmann::json space = nlohmann::json::array();
+  for (const TuneParameter& p : s.parameters) space.push_back({{"key", p.key}, {"min", p.min}, {"max", p.max}});
+  j["parameters"] = space;
+  j["budget"] = s.budget;
+  j["seed"] = s.seed;
+  j["search"] = "Latin hypercube (log-uniform) of budget/2 points, then "
+                "batches perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
+  long admissible = 0;
+  for (const TunePoint& p : r.points) admissible += p.admissible() ? 1 : 0;
+  j["evaluated"] = r.points.size();
+  j["admissible"] = admissible;
+  j["eigenaxis_bang_bang_time"] = r.eigenaxis_bang_bang_time ? nlohmann::json(*r.eigenaxis_bang_bang_time) : nlohmann::json(nullptr);
+  j["nominal"] = point_json(s.parameters, r.nominal);
+  if (r.best) {
+    const TunePoint& b = r.points[*r.best];
+    j["outcome"] = "found";
+    j["best"] = point_json(s.parameters, b);
+    j["convergence_time"] = *b.convergence_time;
+    j["convergence_time_over_bang_bang"] = b.ratio ? nlohmann::json(*b.ratio) : nlohmann::json(nullptr);
+  } else {
+    j["outcome"] = "none_converged";
+    j["outcome_reason"] = "none of the " + std::to_string(r.points.size()) +
+                          " evaluated points converged with every constraint kept";
+    j["best"] = nullptr;
+  }
+  nlohmann::json points = nlohmann::json::array();
+  for (const TunePoint& p : r.points) points.push_back(point_json(s.parameters, p));
+  j["points"] = points;
+  return j;
+}
+
+}  // namespace attiguard::app

@@ -1,0 +1,88 @@
+#pragma once
+/// @file tune_search.hpp
+/// Gain search of a pet_erg scenario (docs/pet-erg.md, section "Tuning"): log-uniform Latin
+/// hypercube sampling of the tuned keys, then local refinement around the fastest admissible
+/// point; every candidate is checked by the kind's parser (Γ_d admissibility) and run in memory
+/// on worker threads. Deterministic for a given seed whatever the thread count.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "attiguard/scenario/document.hpp"
+
+namespace attiguard::app {
+
+/// One tuned key, searched log-uniformly on [min, max] (0 < min <= max).
+struct TuneParameter {
+  std::string key;  ///< key path, e.g. "control.kp"
+  double min{0.0};
+  double max{0.0};
+};
+
+/// What to search and how long.
+struct TuneSettings {
+  std::vector<TuneParameter> parameters;
+  long budget{64};          ///< runs in all (half sampling, half refinement)
+  std::uint64_t seed{1};
+  int threads{1};
+  std::filesystem::path scratch;  ///< working directory of the runs (nothing is written)
+};
+
+/// One evaluated candidate.
+struct TunePoint {
+  long index{0};
+  std::string phase;                 ///< "sample", "refine" (or "nominal": the scenario as given)
+  std::vector<double> values;        ///< TuneSettings::parameters order
+  std::string status;                ///< "ok", "rejected" (the parser refused it), "failed"
+  std::string outcome;               ///< summary outcome when ok
+  std::string reason;                ///< why rejected/failed, or outcome_reason
+  long violations{0};                ///< `*_satisfied` flags that are false
+  std::optional<double> convergence_time;
+  std::optional<double> ratio;       ///< convergence_time_over_bang_bang
+  std::optional<double> bang_bang_time;  ///< eigenaxis_bang_bang_time of the slew
+  /// ok, converged and no violation: a guaranteed manoeuvre.
+  [[nodiscard]] bool admissible() const noexcept {
+    return status == "ok" && outcome == "converged" && violations == 0 && convergence_time.has_value();
+  }
+};
+
+/// The whole search.
+struct TuneResult {
+  std::vector<TunePoint> points;     ///< in evaluation order (index)
+  std::optional<std::size_t> best;   ///< fastest admissible point, if any
+  std::optional<double> eigenaxis_bang_bang_time;  ///< from the nominal run's summary
+  TunePoint nominal;                 ///< the scenario as given (values: its keys, NaN if absent)
+};
+
+/// Default search space around the scenario's values (as parsed: the defaults where a key is
+/// absent): control.kp and control.kd in [x/30, 30 x], erg.kappa in [κ/10, 100 κ],
+/// erg.sampling_period in [T_s/25, 4 T_s], erg.c_gamma in [1.01, max(10, c_Γ)]
+/// (docs/pet-erg.md, section 15). Throws InputError when the scenario is not pet_erg.
+[[nodiscard]] std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal);
+
+/// Parses "KEY=MIN:MAX" (docs/pet-erg.md, "Tuning"); throws InputError naming the option.
+[[nodiscard]] TuneParameter parse_tune_range(const std::string& text);
+
+/// The scenario with the parameters' keys set to `values`.
+[[nodiscard]] scenario::Document tune_candidate(const scenario::Document& nominal,
+                                                const std::vector<TuneParameter>& parameters,
+                                                const std::vector<double>& values);
+
+/// Evaluates one candidate (check, run in memory, classify). Never throws for the run itself.
+[[nodiscard]] TunePoint evaluate_candidate(const scenario::Document& nominal,
+                                           const std::vector<TuneParameter>& parameters,
+                                           const std::vector<double>& values,
+                                           const std::filesystem::path& scratch);
+
+/// Runs the search (docs/pet-erg.md, "Tuning"). Throws InputError for a bad space or budget.
+[[nodiscard]] TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& settings);
+
+/// DIR/tune.json: settings, best gains, convergence time and ratio, every point.
+[[nodiscard]] nlohmann::json tune_json(const TuneSettings& settings, const TuneResult& result);
+
+}  // namespace attiguard::app

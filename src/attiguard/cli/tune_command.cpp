@@ -1,0 +1,95 @@
+/// @file tune_command.cpp
+/// `attiguard tune`: the fastest guaranteed manoeuvre of a pet_erg scenario over its gains
+/// (docs/pet-erg.md, section "Tuning").
+
+#include "attiguard/cli/tune_command.hpp"
+
+#include <fstream>
+#include <iostream>
+
+#include "attiguard/app/tune_search.hpp"
+#include "attiguard/cli/commands.hpp"
+#include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/document_edit.hpp"
+
+namespace attiguard::cli {
+
+namespace {
+
+void make_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir.string() + ": cannot create output directory");
+  }
+}
+
+}  // namespace
+
+void tune_command(const TuneArguments& args) {
+  const scenario::Document loaded = scenario::load_document(args.scenario);
+  // A campaign scenario is tuned at its nominal values.
+  const scenario::Document nominal =
+      loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
+  app::TuneSettings s;
+  for (const std::string& r : args.ranges) s.parameters.push_back(app::parse_tune_range(r));
+  if (s.parameters.empty()) s.parameters = app::default_tune_parameters(nominal);
+  s.budget = args.budget;
+  s.seed = args.seed;
+  s.threads = args.threads;
+  make_dir(args.out_dir);
+  s.scratch = args.out_dir / ".scratch";
+  std::cout << "Tuning " << args.scenario.string() << ": " << s.budget << " runs on "
+            << s.threads << " thread(s), seed " << s.seed << '\n';
+  for (const auto& p : s.parameters) {
+    std::cout << "  " << p.key << " in [" << p.min << ", " << p.max << "] (log-uniform)\n";
+  }
+  const app::TuneResult r = app::tune_search(nominal, s);
+  std::error_code ec;
+  std::filesystem::remove_all(s.scratch, ec);
+  const nlohmann::json j = app::tune_json(s, r);
+  const auto tune_path = args.out_dir / "tune.json";
+  std::ofstream(tune_path, std::ios::binary | std::ios::trunc) << j.dump(2) << '\n';
+  std::cout << "Evaluated " << j["evaluated"] << " points: " << j["admissible"]
+            << " converged with every constraint kept\n";
+  if (!r.best) {
+    std::cout << "Wrote:\n  " << tune_path.string() << '\n';
+    throw VerificationFailure(args.scenario.string() + ": attiguard tune: " +
+                              j["outcome_reason"].get<std::string>() + " (see " +
+                              tune_path.string() + ")");
+  }
+  const app::TunePoint& b = r.points[*r.best];
+  std::cout << "best:";
+  for (std::size_t d = 0; d < s.parameters.size(); ++d) {
+    std::cout << ' ' << s.parameters[d].key << " = " << b.values[d];
+  }
+  std::cout << "\nconvergence_time: " << *b.convergence_time << " s";
+  if (b.ratio) std::cout << " (" << *b.ratio << " x the eigenaxis bang-bang time)";
+  std::cout << '\n';
+  const auto& own = r.nominal;
+  if (own.admissible()) {
+    std::cout << "scenario's own values: " << *own.convergence_time << " s";
+    if (own.ratio) std::cout << " (" << *own.ratio << " x)";
+    std::cout << '\n';
+  } else {
+    std::cout << "scenario's own values: " << own.status
+              << (own.outcome.empty() ? "" : ", " + own.outcome) << '\n';
+  }
+  const auto best_path = args.out_dir / scenario::scenario_file_name("best");
+  {
+    const scenario::Document best = app::tune_candidate(nominal, s.parameters, b.values);
+    std::ofstream out(best_path, std::ios::binary | std::ios::trunc);
+    out << "# Written by attiguard tune from " << args.scenario.filename().string()
+        << " (docs/pet-erg.md, section \"Tuning\")\n"
+        << scenario::document_text(best);
+  }
+  std::cout << "Wrote:\n  " << tune_path.string() << "\n  " << best_path.string() << '\n';
+  if (args.plot) {
+    const PlotOutcome p = plot_results("tune", args.out_dir);
+    for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
+    if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
+  }
+}
+
+}  // namespace attiguard::cli

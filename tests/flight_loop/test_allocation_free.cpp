@@ -303,5 +303,64 @@ TEST(AllocationFree, MissionStepOverTwoWaypoints) {
   std::printf("Mission modes visited:%s\n", visited.c_str());
 }
 
+TEST(AllocationFree, MissionStepBrakingALateralAndRecedingStartWithShapedGains) {
+  // The paths beyond the paper's geometry: a start moving away from the first waypoint and across
+  // its line of sight (lateral-speed brake, closest approach, re-plan), with the shaped PID of profile
+  // "craft" (S = J/J_max, ω × Jω) on unequal principal moments.
+  guidance::MissionParams p;
+  p.mass = 100.0;
+  p.T_max = 20.0;
+  p.f_max = 0.5;
+  p.pointing_tolerance = 1e-3;
+  p.cruise_speed = 2.0;  // the 5 m/s lateral start is above max(brake_speed, V_d/4)
+  p.pointing_thrust_axis = true;
+  p.arrival_radius = 0.005;
+  p.position_accuracy = 0.2;
+  p.speed_accuracy = 0.005;
+  p.braking_margin = 0.95;
+  p.flip_timing = guidance::FlipTiming::braking_point;
+  p.flip_lead_time = 60.0;
+  p.rct = {0.02, 0.5};
+  p.brake_speed = guidance::default_brake_speed(p);
+  const Mat3 J = Vec3(5.0, 20.0, 24.0).asDiagonal();
+  control::QuaternionPidGains gains{2.0 * 0.09 * 24.0, 0.0, 4.0 * 0.3 * 24.0, 0.0};
+  gains.shaped = true;
+  gains.shaping = J / 24.0;
+  gains.shaping_scale = 24.0;
+  const std::array waypoints_i{Vec3(200.0, 0.0, 0.0), Vec3(200.0, 200.0, 0.0)};
+  guidance::Mission mission(p, gains, waypoints_i);
+  const dynamics::SpacecraftPlant plant(p.mass, J);
+
+  guidance::MissionInputs in;
+  in.dt = 0.1;
+  in.v_i = Vec3(-2.0, 5.0, 0.0);  // receding from the first waypoint and 5 m/s across its line
+  std::set<guidance::Mode> modes;
+  std::set<guidance::TransitionReason> reasons;
+  g_allocations = 0;
+  for (int k = 0; k < kCalls; ++k) {
+    const guidance::MissionCommand cmd = counted([&] { return mission.step(in); });
+    modes.insert(cmd.mode);
+    if (cmd.transition) reasons.insert(cmd.reason);
+    constexpr int substeps = 10;
+    const double h = in.dt / substeps;
+    for (int s = 0; s < substeps; ++s) {
+      const Vec3 a_i = plant.acceleration_i(in.R_ib, cmd.inputs);
+      in.omega_b += h * plant.body().angular_acceleration(in.omega_b,
+                                                          plant.applied_torque(cmd.inputs.tau_b));
+      in.R_ib = in.R_ib * lie::exp(h * in.omega_b);
+      in.p_i += h * in.v_i;
+      in.v_i += h * a_i;
+    }
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
+                                     << " calls of Mission::step";
+  std::string visited;
+  for (const guidance::TransitionReason r : reasons) visited += std::string(" ") + guidance::reason_name(r);
+  EXPECT_EQ(modes.count(guidance::Mode::brake), 1U) << "reasons:" << visited;
+  EXPECT_EQ(reasons.count(guidance::TransitionReason::lateral_speed), 1U) << "reasons:" << visited;
+  EXPECT_EQ(reasons.count(guidance::TransitionReason::replan), 1U) << "reasons:" << visited;
+  std::printf("Mission transition reasons:%s\n", visited.c_str());
+}
+
 }  // namespace
 }  // namespace attiguard

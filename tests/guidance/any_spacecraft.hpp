@@ -1,11 +1,17 @@
 #pragma once
 /// The "any spacecraft" property of issue 13 (docs/waypoint.md, "Tuning"): random crafts (mass
-/// 10–5000 kg, inertia 1–10⁴ kg·m² with random principal axes, thrust-to-mass 0.001–1 m/s², RCT
+/// 10–5000 kg, principal moments drawn independently log-uniform in 1–10⁴ kg·m² — ratios up to
+/// ≈ 10⁴, the largest clipped below the sum of the other two — about random principal axes,
+/// thrust-to-mass 0.001–1 m/s², RCT
 /// authority 0.01–0.5 of the main thrust, control 1–50 Hz), random accuracies, random waypoint
 /// lists of 1–5 (collinear, reversing, zero-length and behind-the-craft legs) and random initial
 /// velocity, each written as a `waypoint` scenario file in profile "craft" (every guidance key
 /// derived) and judged: rejected up front by `check` (with its reason), completed, or not. Used by
 /// AnySpacecraft.* with a few hundred crafts and by scripts/waypoint_any_spacecraft.sh with 10⁴.
+/// Measured (seed 13, inertia-shaped attitude PID): 10⁴ crafts, 2367 rejected (all at
+/// guidance.speed_accuracy), 7633 accepted, 7632 completed (99.99 %), 1 time-out (case 8249: the
+/// duration budget below is short for its RCT-flown legs), 0 NaN/divergence; median Δv/ideal
+/// 0.641, time/ideal 2.813. 300 crafts (the suite): 220 accepted, 220 completed.
 
 #include <algorithm>
 #include <cmath>
@@ -62,14 +68,11 @@ inline Case make_case(unsigned long long seed, int k) {
   std::mt19937_64 g(seed * 1000003ULL + static_cast<unsigned long long>(k));
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double mass = log_uniform(g, 10.0, 5000.0);
-  // Principal moments within 1–1e4 kg m^2, within a factor 2 of a common scale each way (so
-  // J_max/J_min ≤ 4) and satisfying the triangle inequality, random principal axes.
-  const double J0 = log_uniform(g, 2.0, 5e3);
-  std::vector<double> m{J0 * log_uniform(g, 0.5, 2.0), J0 * log_uniform(g, 0.5, 2.0),
-                        J0 * log_uniform(g, 0.5, 2.0)};
-  for (double& x : m) x = std::clamp(x, 1.0, 1e4);
+  // Principal moments drawn independently, log-uniform in 1–1e4 kg m^2, sorted, the largest
+  // clipped below m0 + m1 (triangle inequality), random principal axes.
+  std::vector<double> m{log_uniform(g, 1.0, 1e4), log_uniform(g, 1.0, 1e4), log_uniform(g, 1.0, 1e4)};
   std::sort(m.begin(), m.end());
-  m[2] = std::min(m[2], 0.98 * (m[0] + m[1]));
+  m[2] = std::max(m[1], std::min(m[2], 0.98 * (m[0] + m[1])));  // m1 <= m2 < m0 + m1
   const Eigen::Quaterniond qa(Eigen::Vector4d(unit(g).x(), unit(g).y(), unit(g).z(), u(g) - 0.5).normalized());
   const Eigen::Matrix3d Ra = qa.toRotationMatrix();
   Eigen::Matrix3d J = Ra * Eigen::Vector3d(m[0], m[1], m[2]).asDiagonal() * Ra.transpose();

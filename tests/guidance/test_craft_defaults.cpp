@@ -64,6 +64,22 @@ TEST(CraftDefaults, AttitudeGainsRespectTheWheelLimitAndTheSlewTimeFollows) {
   EXPECT_NEAR(wheel_half_turn_time(c), 2.0 * std::sqrt(M_PI * 20.0 / 0.1), 1e-9);
 }
 
+TEST(CraftDefaults, AttitudeGainsAreShapedByTheInertiaSoEveryAxisHasTheSameBandwidth) {
+  CraftLimits c = paper_craft();
+  c.J = lie::Vec3(2.0, 5000.0, 5001.0).asDiagonal();  // J_max/J_min = 2500
+  c.J_min = 2.0;
+  c.J_max = 5001.0;
+  const control::QuaternionPidGains g = craft_attitude_gains(c);
+  ASSERT_TRUE(g.shaped);
+  EXPECT_TRUE(g.shaping.isApprox(c.J / c.J_max, 1e-15));
+  EXPECT_DOUBLE_EQ(g.shaping_scale, c.J_max);
+  // ω_n = 0.3 rad/s at 10 Hz whatever J_min (the scalar law needed J_min/(4 J_max T_s) = 1e-3).
+  EXPECT_NEAR(std::sqrt(g.kp / (2.0 * c.J_max)), 0.3, 1e-12);
+  // The sampled derivative term on the lightest axis, k_d S_11 T_s/(2 J_1) = 2 ω_n T_s ≤ 0.2.
+  EXPECT_LE(g.kd * g.shaping(0, 0) * c.control_period / (2.0 * c.J(0, 0)), 0.2 + 1e-12);
+  EXPECT_NEAR(craft_slew_time(c, g), 10.0 / 0.3, 1e-9);
+}
+
 TEST(CraftDefaults, BrakingMarginShrinksWithTheSampledOvershoot) {
   const CraftLimits c = paper_craft();
   EXPECT_DOUBLE_EQ(craft_braking_margin(c, 100.0), 0.95);  // capped

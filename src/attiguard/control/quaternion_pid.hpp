@@ -14,6 +14,13 @@ struct QuaternionPidGains {
   /// Conditional integration (anti-windup, not in the paper): ∫ε grows only while
   /// ‖ε‖ < integral_zone; 0 = always (the paper). Keeps a 180° flip from winding up the integral.
   double integral_zone{0.0};
+  /// Inertia shaping (not in the paper; docs/waypoint.md, "Tuning"): when true the torque of
+  /// (27) is S (−k_p ε − k_i ∫ε − k_d ε̇) with S = `shaping` (profile "craft": J/J_max, so every
+  /// principal axis gets the bandwidth the scalar gains give the largest one, and the ω × J ω
+  /// feed-forward `gyroscopic` J_max S is added). False = the paper's scalar law, unchanged.
+  bool shaped{false};
+  lie::Mat3 shaping{lie::Mat3::Identity()};  ///< S, symmetric positive definite [-]
+  double shaping_scale{0.0};                 ///< J_max of S = J/J_max, for ω × J ω [kg·m²]
 };
 
 /// Output of one controller sample.
@@ -27,7 +34,9 @@ struct QuaternionPidOutput {
 /// Sampled PID (27) of the waypoint paper: τ^b = −k_p ε − k_i ∫ε − k_d ε̇ with ε = vec(q_{d,b}),
 /// q_{d,b} = q_{d,i} ⊗ q_{i,b} (eq. (25); erratum, docs/errata.md, Waypoint 8: the paper prints q_{d,i} ⊗ q_{i,d} = 1) and
 /// ε̇ = ½ (η I + S(ε)) ω^b_{d,b} from (26). The integral is a forward-Euler sum over the sample
-/// period (gated by integral_zone). Noexcept and allocation-free.
+/// period (gated by integral_zone). With QuaternionPidGains::shaped the torque is
+/// S(−k_p ε − k_i ∫ε − k_d ε̇) + ω × (J_max S) ω (docs/waypoint.md, "Tuning", inertia shaping).
+/// Noexcept and allocation-free.
 class QuaternionPid {
  public:
   explicit QuaternionPid(const QuaternionPidGains& gains) noexcept : gains_(gains) {}

@@ -76,7 +76,7 @@ double wheel_half_turn_time(const CraftLimits& c) noexcept {
 }
 
 control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept {
-  double omega_n = std::min({0.3, 0.1 / c.control_period, c.J_min / (4.0 * c.J_max * c.control_period)});
+  double omega_n = std::min(0.3, 0.1 / c.control_period);
   if (c.max_wheel_torque > 0.0) {
     omega_n = std::min(omega_n, std::sqrt(c.max_wheel_torque / (2.0 * c.J_max)));
   }
@@ -85,6 +85,9 @@ control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept 
   g.kd = 4.0 * omega_n * c.J_max;
   g.ki = 0.0;
   g.integral_zone = 0.0;
+  g.shaped = true;
+  g.shaping = c.J / c.J_max;
+  g.shaping_scale = c.J_max;
   return g;
 }
 

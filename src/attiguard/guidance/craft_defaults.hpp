@@ -19,6 +19,7 @@ struct CraftLimits {
   double f_max{0.5};               ///< one RCT's thrust [N]
   double J_max{20.0};              ///< largest principal inertia [kg·m²]
   double J_min{20.0};              ///< smallest principal inertia [kg·m²]
+  lie::Mat3 J{lie::Mat3::Identity() * 20.0};  ///< inertia in the body frame [kg·m²]
   double max_wheel_torque{0.0};    ///< per-axis wheel limit, 0 = none [N·m]
   double control_period{0.1};      ///< T_s [s]
   [[nodiscard]] double a_main() const noexcept { return T_max / mass; }  ///< [m/s²]
@@ -94,9 +95,10 @@ struct CraftLimits {
 /// limit [s].
 [[nodiscard]] double wheel_half_turn_time(const CraftLimits& c) noexcept;
 
-/// Critically damped attitude PD (27) for the largest inertia: natural frequency
-/// ω_n = min(0.3, 0.1/T_s, J_min/(4 J_max T_s)) rad/s (the last keeps the sampled derivative
-/// term k_d T_s/(2 J_min) ≤ 1/2 on the lightest axis) and, with a wheel limit τ_w, at most
+/// Critically damped attitude PD (27), shaped by the inertia (QuaternionPidGains::shaped,
+/// S = J/J_max, with the ω × J ω feed-forward) so that every principal axis, however unequal the
+/// moments, has the same natural frequency ω_n = min(0.3, 0.1/T_s) rad/s (the sampled derivative
+/// term k_d S_ii T_s/(2 J_i) = 2 ω_n T_s ≤ 0.2 on every axis) and, with a wheel limit τ_w, at most
 /// √(τ_w/(2 J_max)); k_p = 2 ω_n² J_max, k_d = 4 ω_n J_max (ε ≈ θ/2 in (27)); k_i = 0.
 [[nodiscard]] control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept;
 

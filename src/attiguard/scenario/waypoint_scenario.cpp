@@ -94,6 +94,7 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   const lie::Vec3 moments = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues();
   limits.J_max = moments.maxCoeff();
   limits.J_min = moments.minCoeff();
+  limits.J = sc.J;
   limits.max_wheel_torque = sc.max_wheel_torque;
   limits.control_period = sc.control_period;
 
@@ -108,6 +109,11 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     sc.gains.kd = paper ? att->number("kd", NumberRule::positive())
                         : att->number_or("kd", craft_gains.kd, NumberRule::positive());
     sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
+    if (!paper && !att->has("kp") && !att->has("kd")) {  // derived gains keep their shaping
+      sc.gains.shaped = craft_gains.shaped;
+      sc.gains.shaping = craft_gains.shaping;
+      sc.gains.shaping_scale = craft_gains.shaping_scale;
+    }
   } else {
     sc.gains = craft_gains;
   }

@@ -203,9 +203,8 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
              "must be >= control_period (" + num(sc.control_period) + "): rows are logged at "
              "control samples");
   }
-  if (sc.duration / sc.control_period > 1e8) {
-    sim.fail("control_period", "too small for the duration (more than 1e8 control samples)");
-  }
+  require_countable(sim, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
+                    "control samples");
   require_step_budget(sim, sc.integrator, sc.duration);
   require_countable(sim, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");

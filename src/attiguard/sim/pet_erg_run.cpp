@@ -175,6 +175,35 @@ std::vector<double> stop_times(const std::vector<Stop>& plan) {
 }
 
 /// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
+/// The run from t = 0 over the stop plan of `sc` (both loops): `monitor` at t = 0, at every
+/// integrator step and at every stop; at each stop `at_stop(stop, t, state)` first (sampling or
+/// the control instant); rows to `on_output` at t = 0 and at the output stops.
+template <class Field, class Monitor, class AtStop>
+integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const Field& field, PetErgState& y,
+                                                 Monitor& monitor, AtStop& at_stop,
+                                                 const PetErgRowObserver& on_output) {
+  {
+    const GovernorOutput out0 = monitor(0.0, y);
+    if (on_output) {
+      on_output(0.0, y, sc.desired.at(0.0), out0);
+    }
+  }
+  const std::vector<Stop> plan = stop_plan(sc);
+  const std::vector<double> times = stop_times(plan);
+  std::size_t next = 0;
+  auto on_stop = [&](double t, PetErgState& s) {
+    const Stop& stop = plan[next++];
+    at_stop(stop, t, s);
+    const GovernorOutput out = monitor(t, s);
+    if (stop.output && on_output) {
+      on_output(t, s, sc.desired.at(t), out);
+    }
+    return true;
+  };
+  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
+  return integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
+}
+
 PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
   const governor::AttitudeGovernor gov(sc.params, sc.cones);
   const dynamics::RigidBody body(sc.params.J);
@@ -210,30 +239,12 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
 
   // t = 0 is the first sampling instant t_0.
   sample(y);
-  {
-    const GovernorOutput out0 = monitor(0.0, y);
-    if (on_output) {
-      on_output(0.0, y, sc.desired.at(0.0), out0);
-    }
-  }
-
-  const std::vector<Stop> plan = stop_plan(sc);
-  const std::vector<double> times = stop_times(plan);
-  std::size_t next = 0;
-  auto on_stop = [&](double t, PetErgState& s) {
-    const Stop& stop = plan[next++];
+  auto at_stop = [&](const Stop& stop, double, PetErgState& s) {
     if (stop.sample) {
       sample(s);
     }
-    const GovernorOutput out = monitor(t, s);
-    if (stop.output && on_output) {
-      on_output(t, s, sc.desired.at(t), out);
-    }
-    return true;
   };
-  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
-  const integrate::IntegrationStats stats =
-      integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
+  const integrate::IntegrationStats stats = integrate_over_stops(sc, field, y, monitor, at_stop, on_output);
   finish(sc, y, stats, r);
   return r;
 }
@@ -338,29 +349,12 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
 
   gov.reset(0.0, sc.R_g0);
   control(0.0, y);
-  {
-    const GovernorOutput out0 = monitor(0.0, y);
-    if (on_output) {
-      on_output(0.0, y, sc.desired.at(0.0), out0);
-    }
-  }
-  const std::vector<Stop> plan = stop_plan(sc);
-  const std::vector<double> times = stop_times(plan);
-  std::size_t next = 0;
-  auto on_stop = [&](double t, PetErgState& s) {
-    const Stop& stop = plan[next++];
+  auto at_stop = [&](const Stop& stop, double t, PetErgState& s) {
     if (stop.control) {
       control(t, s);
     }
-    const GovernorOutput out = monitor(t, s);
-    if (stop.output && on_output) {
-      on_output(t, s, sc.desired.at(t), out);
-    }
-    return true;
   };
-  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
-  const integrate::IntegrationStats stats =
-      integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
+  const integrate::IntegrationStats stats = integrate_over_stops(sc, field, y, monitor, at_stop, on_output);
   finish(sc, y, stats, r);
   if (wheels) {
     const dynamics::WheelVector h = momenta(sc.duration);

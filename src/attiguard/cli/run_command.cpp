@@ -27,9 +27,7 @@ namespace {
 /// The figures of summary.json shown after a run, in this order, when present. Scenario kinds
 /// whose summary has none of them get their first kMaxFigures scalar fields instead; everything
 /// is in summary.json anyway.
-constexpr std::array<std::string_view, 11> kHeadlineKeys{
-    "outcome",                  // flight kinds (docs/campaigns.md, "Outcomes")
-    "outcome_reason",
+constexpr std::array<std::string_view, 9> kHeadlineKeys{
     "law",                      // rigid_body
     "integrator",
     "duration",

@@ -69,6 +69,15 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
   if (params.polytope_gamma_d > 0.0) {
     gamma_d_ = std::min(gamma_d_, params.polytope_gamma_d);
   }
+  require(!params.robust || params.bounded_step,
+          "robust margins need the bounded reference step (the flight loop's, bounded_step)");
+  if (params.robust) {
+    const RobustMargin& m = *params.robust;
+    require(m.epsilon > 0.0 && m.delta >= 0.0 && m.delta < 1.0 && std::isfinite(m.gamma_min) &&
+                m.gamma_min >= 0.0 && std::isfinite(m.measurement_margin) && m.measurement_margin >= 0.0 &&
+                m.max_reference_step > 0.0,
+            "robust margins: use the values of compute_robust_margin");
+  }
   gamma_d_loose_ = torque_threshold_loose(in);
   gamma_cap_ = params.gains.kp * (2.0 - params.epsilon_gamma);
   out_.gamma_d = gamma_d_;
@@ -89,7 +98,26 @@ double AttitudeGovernor::gamma_g(const Mat3& R_g) const noexcept {
 }
 
 double AttitudeGovernor::gamma(const Mat3& R_g) const noexcept {
-  return std::min({gamma_d_, gamma_g(R_g), gamma_cap_});
+  const double nominal = std::min({gamma_d_, gamma_g(R_g), gamma_cap_});
+  return params_.robust ? (1.0 - params_.robust->delta) * nominal : nominal;
+}
+
+double AttitudeGovernor::level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept {
+  if (!params_.robust) return lyapunov(R_ib, omega_b, R_g);
+  return strict_lyapunov(params_.J, R_ib, omega_b, R_g, params_.gains.kp, params_.robust->epsilon);
+}
+
+double AttitudeGovernor::decision_level(const Mat3& R_ib, const Vec3& omega_b,
+                                        const Mat3& R_g) const noexcept {
+  const double W = level(R_ib, omega_b, R_g);
+  return params_.robust ? W + params_.robust->measurement_margin : W;
+}
+
+bool AttitudeGovernor::admissible_move(const Mat3& R_ib, const Vec3& omega_b,
+                                       const Mat3& candidate) const noexcept {
+  const double G = gamma(candidate);
+  if (params_.robust && !(G > params_.robust->gamma_min)) return false;
+  return decision_level(R_ib, omega_b, candidate) <= G;
 }
 
 Vec3 AttitudeGovernor::navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept {
@@ -98,7 +126,7 @@ Vec3 AttitudeGovernor::navigation_field(const Mat3& R_g, const Mat3& R_d) const 
 
 bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
                                          const Mat3& R_g) const noexcept {
-  return pet_trigger(gamma(R_g), lyapunov(R_ib, omega_b, R_g), params_.c_gamma);
+  return pet_trigger(gamma(R_g), decision_level(R_ib, omega_b, R_g), params_.c_gamma);
 }
 
 GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
@@ -107,18 +135,20 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   out.R_g = params_.mode == GovernorMode::none ? R_d : R_g;
   out.tau_b = torque(R_ib, omega_b, out.R_g);
   out.V = lyapunov(R_ib, omega_b, out.R_g);
+  out.W = params_.robust ? level(R_ib, omega_b, out.R_g) : out.V;
+  const double decided = params_.robust ? out.W + params_.robust->measurement_margin : out.V;
   out.gamma_d = gamma_d_;
   out.gamma_g = gamma_g(out.R_g);
-  out.gamma = std::min({gamma_d_, out.gamma_g, gamma_cap_});
+  out.gamma = gamma(out.R_g);
   out.trigger = flag;
   switch (params_.mode) {
     case GovernorMode::pet:
       out.rho = navigation_field(out.R_g, R_d);
-      out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, out.V, out.rho, params_.epsilon);
+      out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       break;
     case GovernorMode::continuous:
       out.rho = navigation_field(out.R_g, R_d);
-      out.xi_g = erg_reference_rate(params_.kappa, out.gamma, out.V, out.rho, params_.epsilon);
+      out.xi_g = erg_reference_rate(params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       out.trigger = true;
       break;
     case GovernorMode::none:
@@ -146,13 +176,15 @@ void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
 Mat3 AttitudeGovernor::bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept {
   Vec3 move = dt * out_.xi_g;
   const double length = move.norm();
-  const double limit = out_.rho.norm();  // ρ_n of the previous call, the direction of ξ
+  // ρ_n of the previous call, the direction of ξ; with robust margins also Δ_max (section 13)
+  const double limit =
+      params_.robust ? std::min(out_.rho.norm(), params_.robust->max_reference_step) : out_.rho.norm();
   if (length > limit) {
     move *= limit / length;
   }
   for (int halving = 0; halving < kMaxMoveHalvings; ++halving) {
     const Mat3 candidate = R_g_ * lie::exp(move);
-    if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
+    if (admissible_move(R_ib, omega_b, candidate)) {
       return candidate;
     }
     move *= 0.5;
@@ -175,7 +207,7 @@ const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const V
       } else {
         const Mat3 candidate = R_g_ * lie::exp(dt * out_.xi_g);
         // Zero-order hold of the rate between calls; keep V ≤ Γ at the call instants.
-        if (lyapunov(R_ib, omega_b, candidate) <= gamma(candidate)) {
+        if (admissible_move(R_ib, omega_b, candidate)) {
           R_g_ = candidate;
         }
       }

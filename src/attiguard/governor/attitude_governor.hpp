@@ -14,12 +14,14 @@
 ///         apply(out.tau_b);                     // out.R_g, out.V, out.gamma, out.trigger, …
 
 #include <array>
+#include <optional>
 #include <span>
 
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/core/name_table.hpp"
 #include "attiguard/governor/cone_constraint.hpp"
 #include "attiguard/governor/pet_erg.hpp"
+#include "attiguard/governor/robust_margin.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 
 namespace attiguard::governor {
@@ -56,6 +58,13 @@ struct GovernorParams {
   /// docs/pet-erg.md, section 12): when set, Γ_d is min{Γ_d(‖τ‖ ≤ τ_max), Γ_d(polytope)}, its
   /// value computed offline by compute_polytope_torque_threshold. 0: no polytope.
   double polytope_gamma_d{0.0};
+  /// Robust margins (docs/pet-erg.md, section 13), computed offline by compute_robust_margin
+  /// for torque limits already reduced by its command error (the caller sets tau_max and
+  /// polytope_gamma_d to the reduced ones). When set: the level compared with Γ is the strict
+  /// Lyapunov function W = V − ε ωᵀJ sk(RᵀR_g)^∨ plus the measurement margin e_W, Γ becomes
+  /// Γ_W = (1 − δ) min{Γ_d, Γ_g, k_p(2 − ε_Γ)}, a move of R_g is at most Δ_max long and is taken
+  /// only where Γ_W > Γ_min.
+  std::optional<RobustMargin> robust;
 };
 
 /// Everything the governor knows at one instant (PET-ERG paper notation).
@@ -65,9 +74,12 @@ struct GovernorOutput {
   Vec3 xi_g{Vec3::Zero()};         ///< body rate of R_g, Ṙ_g = R_g ξ̂ (eq. (4) or (6)) [rad/s]
   Vec3 rho{Vec3::Zero()};          ///< navigation field ρ_n(R_d, R_g) (Sec. III-B.2)
   double V{0.0};                   ///< Lyapunov function V(R, ω, R_g) (Sec. III-A)
+  /// The level compared with Γ: V, or W = V − ε ωᵀJ s with robust margins (docs/pet-erg.md,
+  /// section 13; without the measurement margin)
+  double W{0.0};
   double gamma_d{0.0};             ///< Γ_d (constant)
   double gamma_g{0.0};             ///< Γ_g(R_g) = min over cones (+∞ without cones)
-  double gamma{0.0};               ///< Γ(R_g) = min{Γ_d, Γ_g, k_p(2 − ε_Γ)}
+  double gamma{0.0};               ///< Γ(R_g) = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (× (1 − δ) robust)
   bool trigger{true};              ///< flag of (5) held on the current sampling interval
   bool sampled{false};             ///< true when this call evaluated (5) (a sampling instant)
   int cone_count{0};
@@ -91,11 +103,16 @@ class AttitudeGovernor {
   [[nodiscard]] Vec3 torque(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// Γ_g(R_g), the minimum over the cones (PET-ERG paper, Sec. III-B.1; +∞ without cones).
   [[nodiscard]] double gamma_g(const Mat3& R_g) const noexcept;
-  /// Γ(R_g) = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1).
+  /// Γ(R_g) = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1); with robust
+  /// margins Γ_W = (1 − δ) times it (docs/pet-erg.md, section 13).
   [[nodiscard]] double gamma(const Mat3& R_g) const noexcept;
+  /// The level compared with Γ: V, or with robust margins W = V − ε ωᵀJ sk(RᵀR_g)^∨
+  /// (docs/pet-erg.md, section 13).
+  [[nodiscard]] double level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// ρ_n(R_d, R_g) = −grad(P_a + Σ P_r) (PET-ERG paper, Sec. III-B.2).
   [[nodiscard]] Vec3 navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept;
-  /// Trigger condition (5): Γ(R_g) − c_Γ V ≥ 0 (PET-ERG paper, eq. (5)).
+  /// Trigger condition (5): Γ(R_g) − c_Γ V ≥ 0 (PET-ERG paper, eq. (5)); with robust margins
+  /// V → W + e_W of the measured state (docs/pet-erg.md, section 13).
   [[nodiscard]] bool trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
                                        const Mat3& R_g) const noexcept;
   /// The full evaluation at one instant with the held trigger flag `flag`: τ (3), V, Γ's, ρ_n,
@@ -145,6 +162,11 @@ class AttitudeGovernor {
   static constexpr int kMaxMoveHalvings = 30;
   /// The bounded move of R_g over dt (docs/pet-erg.md, "Discrete reference update").
   [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept;
+  /// The level the decisions use: V, or W + e_W with robust margins (section 13).
+  [[nodiscard]] double decision_level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
+  /// May R_g be moved to `candidate` for the measured (R, ω)? V ≤ Γ there; with robust margins
+  /// W + e_W ≤ Γ_W and Γ_W > Γ_min (docs/pet-erg.md, section 13).
+  [[nodiscard]] bool admissible_move(const Mat3& R_ib, const Vec3& omega_b, const Mat3& candidate) const noexcept;
 
   GovernorParams params_;
   ConeSet cones_;

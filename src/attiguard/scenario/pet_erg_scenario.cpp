@@ -16,6 +16,7 @@
 #include "attiguard/governor/polytope_torque_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
+#include "attiguard/scenario/robust_margin_setup.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/ephemeris_check.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -178,6 +179,10 @@ void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
   }
 }
 
+/// `[control] margins` (docs/pet-erg.md, section 13).
+enum class Margins { nominal, robust };
+constexpr NameTable<Margins, 2> kMarginNames{{{{Margins::nominal, "nominal"}, {Margins::robust, "robust"}}}};
+
 }  // namespace
 
 sim::PetErgScenario parse_pet_erg(const Document& doc) {
@@ -187,7 +192,12 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
                  "control", "erg", "cones", "simulation", "imperfections", "wheels"});
   sc.name = read_header(root, doc, "pet_erg");
   check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
-  const TableReader control = parse_governor_block(root, sc.params, {"control_period"});
+  const TableReader control =
+      parse_governor_block(root, sc.params, {"control_period", "margins", "robust_reference_step"});
+  const Margins margins = enum_or(control, "margins", kMarginNames, Margins::nominal);
+  if (margins == Margins::nominal && control.has("robust_reference_step")) {
+    control.fail("robust_reference_step", "only with margins = \"robust\"");
+  }
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
 
   const TableReader body = root.table("body");
@@ -231,6 +241,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     sc.imperfections = parse_imperfections(*im, sc.control_period);
   }
   parse_wheels(root, sc);
+  if (margins == Margins::robust) set_robust_margins(control, sc);
   if (sc.control_period > 0.0) {
     require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
@@ -245,7 +256,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
 
   // Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and
   // V(R_0, ω_0, R_g(0)) ≤ Γ(R_g(0)).
-  const governor::AttitudeGovernor gov = make_governor(root, "", sc.params, sc.cones);
+  const governor::AttitudeGovernor gov = make_governor(root, "", sim::governor_params(sc), sc.cones);
   const auto fail_initial = [&](std::string_view preferred, const std::string& message) {
     if (initial && initial->has(preferred)) {
       initial->fail(preferred, message);
@@ -265,6 +276,13 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     if (!(c > sc.cones[i].delta)) {
       fail_initial("reference", cone_domain_message(root, i, sc.cones[i], c, initial && initial->has("reference")));
     }
+  }
+  if (sc.params.robust) {
+    check_robust_desired(desired, gov, sc);
+    if (const std::string problem = robust_initial_problem(gov, sc); !problem.empty()) {
+      fail_initial("omega_b", problem);
+    }
+    return sc;
   }
   const double V0 = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
   const double G0 = gov.gamma(sc.R_g0);

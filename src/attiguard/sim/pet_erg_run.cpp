@@ -121,7 +121,7 @@ PetErgResult initial_result(const PetErgScenario& sc, const governor::AttitudeGo
   r.gamma_cap = gov.gamma_cap();
   r.gamma_g_initial = gov.gamma_g(sc.R_g0);
   r.gamma_initial = gov.gamma(sc.R_g0);
-  r.V_initial = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
+  r.V_initial = gov.level(sc.R0_ib, sc.omega0_b, sc.R_g0);
   r.min_pointing_margin = std::numeric_limits<double>::infinity();
   r.min_margin_per_cone.assign(sc.cones.size(), std::numeric_limits<double>::infinity());
   r.max_V_minus_Gamma = -std::numeric_limits<double>::infinity();
@@ -139,7 +139,7 @@ void record(const PetErgScenario& sc, PetErgResult& r, double t, const Mat3& R_d
   }
   r.reference_motion.observe(t, out.R_g);
   r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
-  r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.V - out.gamma);
+  r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.W - out.gamma);
   for (int i = 0; i < out.cone_count; ++i) {
     const double m = out.margins[static_cast<std::size_t>(i)];
     auto& mi = r.min_margin_per_cone[static_cast<std::size_t>(i)];
@@ -205,7 +205,7 @@ integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const
 }
 
 PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  const governor::AttitudeGovernor gov(sc.params, sc.cones);
+  const governor::AttitudeGovernor gov(governor_params(sc), sc.cones);
   const dynamics::RigidBody body(sc.params.J);
   PetErgResult r = initial_result(sc, gov);
 
@@ -253,8 +253,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
 /// of that instant and its torque is held until t_{k+1} (zero-order hold); between the instants
 /// only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight loop").
 PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  governor::GovernorParams params = sc.params;
-  params.bounded_step = true;
+  const governor::GovernorParams params = governor_params(sc);
   governor::AttitudeGovernor gov(params, sc.cones);
   const dynamics::RigidBody body(sc.params.J);
   PetErgResult r = initial_result(sc, gov);
@@ -389,6 +388,28 @@ nlohmann::json imperfections_json(const PetErgImperfections& im) {
           {"torque_quantum", im.torque_quantum}};
 }
 
+/// The robust margin of the run (docs/pet-erg.md, section 13), echoed in summary.json.
+nlohmann::json robust_json(const PetErgScenario& sc) {
+  const governor::RobustMargin& m = *sc.params.robust;
+  return {{"epsilon", m.epsilon},
+          {"delta", m.delta},
+          {"omega_max", m.omega_max},
+          {"torque_error", m.torque_error},
+          {"torque_error_parts",
+           {{"disturbance", m.disturbance},
+            {"sensors", m.sensor_error},
+            {"quantisation", m.quantisation_error},
+            {"hold", m.hold_error},
+            {"reference_lag", m.reference_lag_error}}},
+          {"command_error", m.command_error},
+          {"tau_max_reduced", sc.robust_tau_max},
+          {"wheel_gamma_d_reduced", sc.wheels.empty() ? nlohmann::json(nullptr) : nlohmann::json(sc.robust_polytope_gamma_d)},
+          {"gamma_min", m.gamma_min},
+          {"measurement_margin", m.measurement_margin},
+          {"max_reference_step", std::isfinite(m.max_reference_step) ? nlohmann::json(m.max_reference_step) : nlohmann::json(nullptr)},
+          {"start_allowance", m.start_allowance}};
+}
+
 std::string fmt(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", x);
@@ -442,6 +463,8 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["duration"] = sc.duration;
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
+  j["margins"] = sc.params.robust ? "robust" : "nominal";
+  if (sc.params.robust) j["robust"] = robust_json(sc);
   if (!sc.wheels.empty()) {
     j["wheels"] = static_cast<long>(sc.wheels.size());
     j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
@@ -484,6 +507,8 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   const bool wheels_ok = sc.wheels.empty() || (r.max_wheel_torque_ratio <= 1.0 &&
                                                 r.max_wheel_momentum_ratio <= 1.0);
   j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
+  // With robust margins the level is W (docs/pet-erg.md, section 13), of the true state.
+  j["lyapunov_level"] = sc.params.robust ? "W" : "V";
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
   j["final_attitude_error"] = r.final_attitude_error;

@@ -46,10 +46,27 @@ struct PetErgScenario {
   std::vector<dynamics::ReactionWheel> wheels;
   double wheel_gamma_d_upper{0.0};  ///< attained value above the polytope's exact Γ_d
   int wheel_binding{-1};            ///< the wheel whose limit binds the polytope's Γ_d
+  /// [control] margins = "robust" (docs/pet-erg.md, section 13): params.robust is set and the
+  /// governor runs with the torque limits reduced by its command error: τ_max − e_cmd and the
+  /// wheel polytope with each u_max,i − ‖r_i‖ e_cmd (whose Γ_d is robust_polytope_gamma_d).
+  double robust_tau_max{0.0};
+  double robust_polytope_gamma_d{0.0};
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
 };
+
+/// The parameters the governor of a run is built with (docs/pet-erg.md, sections 10 and 13): in
+/// the flight loop the bounded reference step; with robust margins the reduced torque limits.
+[[nodiscard]] inline governor::GovernorParams governor_params(const PetErgScenario& sc) {
+  governor::GovernorParams p = sc.params;
+  p.bounded_step = sc.control_period > 0.0;
+  if (p.robust) {
+    p.tau_max = sc.robust_tau_max;
+    if (!sc.wheels.empty()) p.polytope_gamma_d = sc.robust_polytope_gamma_d;
+  }
+  return p;
+}
 
 }  // namespace attiguard::sim

@@ -1,0 +1,171 @@
+#include "attiguard/governor/robust_margin.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "attiguard/control/pd_so3.hpp"
+#include "attiguard/core/errors.hpp"
+
+namespace attiguard::governor {
+
+namespace {
+
+std::string g(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw SetupError("robust margins: " + what);
+}
+
+bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
+bool non_negative_finite(double x) noexcept { return std::isfinite(x) && x >= 0.0; }
+
+/// Cells of the angle sweep of ultimate_level_bound.
+constexpr int kAngleCells = 4096;
+/// Candidate values of ε tried between ε_max·1e-6 and ε_max.
+constexpr int kEpsilonCandidates = 120;
+
+}  // namespace
+
+double ultimate_level_bound(double a, double b, double c, double epsilon, double u_yy, double u_xx,
+                            double u_xy) noexcept {
+  // Q(x, y) = a y² + b x² − c x y = uᵀ M u with M = [[b, −c/2], [−c/2, a]] (u = (x, y)).
+  const double mean = 0.5 * (a + b);
+  const double radius = std::hypot(0.5 * (a - b), 0.5 * c);
+  const double q_min = mean - radius;  // smallest eigenvalue of M: Q(u) ≥ q_min on the unit circle
+  if (!(q_min > 0.0) || !(4.0 * a * b > c * c)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  // Along the ray r·(cos t, sin t), Q ≤ (y + εx) holds for r ≤ B(t)/Q(t), where U = r² U(t):
+  // sup = max_t U(t) B(t)² / Q(t)². Each cell [t0, t1] is bounded by interval evaluation
+  // (every term is monotone in cos t, sin t ≥ 0).
+  double sup = 0.0;
+  const double dt = 0.5 * std::numbers::pi / kAngleCells;
+  for (int i = 0; i < kAngleCells; ++i) {
+    const double t0 = i * dt;
+    const double t1 = (i + 1 == kAngleCells) ? 0.5 * std::numbers::pi : (i + 1) * dt;
+    const double C0 = std::min(1.0, std::cos(t0));
+    const double C1 = std::max(0.0, std::cos(t1));
+    const double S0 = std::max(0.0, std::sin(t0));
+    const double S1 = std::min(1.0, std::sin(t1));
+    const double U_hi = u_yy * S1 * S1 + u_xx * C0 * C0 + u_xy * C0 * S1;
+    const double B_hi = S1 + epsilon * C0;
+    const double Q_lo = std::max(a * S0 * S0 + b * C1 * C1 - c * C0 * S1, q_min);
+    sup = std::max(sup, U_hi * B_hi * B_hi / (Q_lo * Q_lo));
+  }
+  return sup * (1.0 + 1e-9);  // rounding allowance of the ~20 operations per cell
+}
+
+double strict_lyapunov(const lie::Mat3& J, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
+                       const lie::Mat3& R_g, double kp, double epsilon) noexcept {
+  const lie::Vec3 s = lie::vee(lie::sk(R_ib.transpose() * R_g));
+  return control::pd_lyapunov(J, R_ib, omega_b, R_g, {kp, 1.0}) - epsilon * omega_b.dot(J * s);
+}
+
+double command_error_bound(const RobustMarginInputs& in) noexcept {
+  return in.kp * in.attitude_error + in.kd * in.rate_error + in.quantisation_error;
+}
+
+RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
+  require(positive_finite(in.kp) && positive_finite(in.kd), "kp and kd must be positive and finite");
+  require(positive_finite(in.control_period), "needs the flight loop: control_period > 0");
+  require(in.delay_periods == 0 || in.delay_periods == 1, "delay_periods must be 0 or 1");
+  for (const double x : {in.attitude_error, in.rate_error, in.quantisation_error, in.disturbance,
+                         in.wheel_momentum_max}) {
+    require(non_negative_finite(x), "error bounds must be finite and non-negative");
+  }
+  require(positive_finite(in.applied_torque_max), "the applied torque bound must be positive");
+  require(std::isfinite(in.epsilon_gamma) && in.epsilon_gamma > 0.0 && in.epsilon_gamma < 2.0,
+          "epsilon_gamma must lie in (0, 2)");
+  require(positive_finite(in.gamma_top) && in.gamma_top <= in.kp * (2.0 - in.epsilon_gamma) * (1.0 + 1e-12),
+          "gamma_top must be positive and at most kp (2 - epsilon_gamma)");
+  const Eigen::SelfAdjointEigenSolver<lie::Mat3> eig(in.J, Eigen::EigenvaluesOnly);
+  const double lmin = eig.eigenvalues().minCoeff();
+  const double lmax = eig.eigenvalues().maxCoeff();
+  require(positive_finite(lmin) && positive_finite(lmax), "the inertia must be positive definite");
+
+  RobustMargin m;
+  const double kp = in.kp;
+  const double kd = in.kd;
+  const double h = in.control_period;
+  const int d = in.delay_periods;
+  // Bounds on {V ≤ Γ_top}: ½λ_min‖ω‖² ≤ V, k_p φ ≤ V, ‖s‖² = φ(2 − φ).
+  const double phi_top = std::min(in.gamma_top / kp, 2.0 - in.epsilon_gamma);
+  m.omega_max = std::sqrt(2.0 * in.gamma_top / lmin);
+  m.s_max = phi_top >= 1.0 ? 1.0 : std::sqrt(phi_top * (2.0 - phi_top));
+  const double theta_top = std::acos(std::clamp(1.0 - phi_top, -1.0, 1.0));
+  const double gyro = 0.5 * (lmax - lmin);  // ‖Jω × ω‖ ≤ ½(λ_max − λ_min)‖ω‖²
+  const double H = in.wheel_momentum_max;
+
+  // The torque-error budget (docs/pet-erg.md, section 13, "Error budget").
+  m.sensor_error = kp * in.attitude_error + kd * in.rate_error;
+  m.quantisation_error = in.quantisation_error;
+  m.command_error = command_error_bound(in);
+  m.disturbance = in.disturbance;
+  // The applied torque is the quantised command of a state in {V ≤ Γ_top}: its PD torque is at
+  // most √(2k_p + 2k_d²/λ_min) √Γ_top (the loose bound of docs/pet-erg.md section 2), plus e_cmd.
+  const double applied = std::min(in.applied_torque_max,
+                                  std::sqrt(2.0 * kp + 2.0 * kd * kd / lmin) * std::sqrt(in.gamma_top) +
+                                      m.command_error);
+  const double omega_dot_max =
+      (gyro * m.omega_max * m.omega_max + H * m.omega_max + applied + in.disturbance) / lmin;
+  const double torque_rate_max = kp * m.omega_max + kd * omega_dot_max;  // ‖d/dt τ_PD‖ ≤ this
+  m.hold_error = (1.0 + d) * h * torque_rate_max;
+  if (d == 0) {
+    m.max_reference_step = std::numeric_limits<double>::infinity();
+    m.reference_lag_error = 0.0;
+  } else {
+    m.max_reference_step = in.max_reference_step > 0.0
+                               ? in.max_reference_step
+                               : (m.disturbance + m.command_error + m.hold_error) / (2.0 * kp);
+    require(positive_finite(m.max_reference_step), "the reference step cap must be positive and finite");
+    m.reference_lag_error = d * kp * m.max_reference_step;
+  }
+  m.torque_error = m.disturbance + m.command_error + m.hold_error + m.reference_lag_error;
+  const double wbar = m.torque_error;
+
+  // ε: a = k_d − ελ_max > 0, δ = ε√(λ_max/k_p) < 1 and 4ab > c² with c = ε(k_d + gyro ω_max + H).
+  const double C = kd + gyro * m.omega_max + H;
+  const double eps_max = std::min({kd / lmax, std::sqrt(kp / lmax), 4.0 * kp * kd / (4.0 * kp * lmax + C * C)});
+  double best_score = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kEpsilonCandidates; ++i) {
+    const double eps = eps_max * std::pow(10.0, -6.0 * (1.0 - (i + 0.5) / kEpsilonCandidates));
+    const double delta = eps * std::sqrt(lmax / kp);
+    const double a = kd - eps * lmax;
+    const double b = eps * kp;
+    const double c = eps * C;
+    const double unit = ultimate_level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - phi_top), eps * lmax);
+    if (!std::isfinite(unit) || !(delta < 1.0)) continue;
+    const double gamma_min = wbar * wbar * unit;
+    const double score = gamma_min / (1.0 - delta);
+    if (score < best_score) {
+      best_score = score;
+      m.epsilon = eps;
+      m.delta = delta;
+      m.a = a;
+      m.b = b;
+      m.c = c;
+      m.gamma_min = gamma_min;
+    }
+  }
+  require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + g(kp) +
+                               ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax));
+  const double sr = in.attitude_error;
+  const double sw = in.rate_error;
+  m.measurement_margin = lmax * (m.omega_max * sw + 0.5 * sw * sw) +
+                         kp * sr * std::min(1.0, theta_top + sr) +
+                         m.epsilon * lmax * (sw * (m.s_max + sr) + m.omega_max * sr);
+  const double pd_torque_max = kp * m.s_max + kd * m.omega_max;
+  m.start_allowance = d * h * (in.disturbance + pd_torque_max) * (m.omega_max + m.epsilon * m.s_max);
+  return m;
+}
+
+}  // namespace attiguard::governor

@@ -71,14 +71,14 @@ double strict_lyapunov(const lie::Mat3& J, const lie::Mat3& R_ib, const lie::Vec
 }
 
 double command_error_bound(const RobustMarginInputs& in) noexcept {
-  return in.kp * in.attitude_error + in.kd * in.rate_error + in.quantisation_error;
+  return in.kp * in.attitude_noise + in.kd * in.rate_error + in.quantisation_error;
 }
 
 RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
   require(positive_finite(in.kp) && positive_finite(in.kd), "kp and kd must be positive and finite");
   require(positive_finite(in.control_period), "needs the flight loop: control_period > 0");
   require(in.delay_periods == 0 || in.delay_periods == 1, "delay_periods must be 0 or 1");
-  for (const double x : {in.attitude_error, in.rate_error, in.quantisation_error, in.disturbance,
+  for (const double x : {in.attitude_bias, in.attitude_noise, in.rate_error, in.quantisation_error, in.disturbance,
                          in.wheel_momentum_max}) {
     require(non_negative_finite(x), "error bounds must be finite and non-negative");
   }
@@ -106,7 +106,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
   const double H = in.wheel_momentum_max;
 
   // The torque-error budget (docs/pet-erg.md, section 13, "Error budget").
-  m.sensor_error = kp * in.attitude_error + kd * in.rate_error;
+  m.sensor_error = kp * in.attitude_noise + kd * in.rate_error;
   m.quantisation_error = in.quantisation_error;
   m.command_error = command_error_bound(in);
   m.disturbance = in.disturbance;
@@ -125,15 +125,17 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
   } else {
     m.max_reference_step = in.max_reference_step > 0.0
                                ? in.max_reference_step
-                               : (m.disturbance + m.command_error + m.hold_error) / (2.0 * kp);
+                               : (m.disturbance + m.command_error + m.hold_error) / (4.0 * kp);
     require(positive_finite(m.max_reference_step), "the reference step cap must be positive and finite");
     m.reference_lag_error = d * kp * m.max_reference_step;
   }
   m.torque_error = m.disturbance + m.command_error + m.hold_error + m.reference_lag_error;
   const double wbar = m.torque_error;
 
-  // ε: a = k_d − ελ_max > 0, δ = ε√(λ_max/k_p) < 1 and 4ab > c² with c = ε(k_d + gyro ω_max + H).
+  // ε: a = k_d − ελ_max > 0, δ = ε√(λ_max/k_p) < 1 and 4ab > c² with c = ε(k_d + gyro ω_max + H)
+  // + k_p β (the bias term k_p ωᵀ(I − B)s of V̇, ‖I − B‖ ≤ β).
   const double C = kd + gyro * m.omega_max + H;
+  const double bias_coupling = kp * 2.0 * std::sin(0.5 * std::min(in.attitude_bias, std::numbers::pi));
   const double eps_max = std::min({kd / lmax, std::sqrt(kp / lmax), 4.0 * kp * kd / (4.0 * kp * lmax + C * C)});
   double best_score = std::numeric_limits<double>::infinity();
   for (int i = 0; i < kEpsilonCandidates; ++i) {
@@ -141,7 +143,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     const double delta = eps * std::sqrt(lmax / kp);
     const double a = kd - eps * lmax;
     const double b = eps * kp;
-    const double c = eps * C;
+    const double c = eps * C + bias_coupling;
     const double unit = ultimate_level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - phi_top), eps * lmax);
     if (!std::isfinite(unit) || !(delta < 1.0)) continue;
     const double gamma_min = wbar * wbar * unit;
@@ -158,7 +160,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
   }
   require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + g(kp) +
                                ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax));
-  const double sr = in.attitude_error;
+  const double sr = in.attitude_noise;
   const double sw = in.rate_error;
   m.measurement_margin = lmax * (m.omega_max * sw + 0.5 * sw * sw) +
                          kp * sr * std::min(1.0, theta_top + sr) +

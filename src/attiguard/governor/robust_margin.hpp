@@ -9,6 +9,8 @@
 /// III-A) with Γ_W(R_g) = (1 − δ) Γ'(R_g), Γ' the aggregate threshold computed with the torque
 /// limits reduced by the command error. On the set where the bounds hold,
 ///   (1 − δ) V ≤ W ≤ (1 + δ) V   and   Ẇ ≤ −a‖ω‖² − b‖s‖² + c‖s‖‖ω‖ + w̄ (‖ω‖ + ε‖s‖),
+/// written for the attitude R B seen through the constant attitude bias B (the cones are
+/// tightened by its angle),
 /// so every sublevel set {W ≤ L} with L > Γ_min is invariant under any torque error within w̄,
 /// and inside it V ≤ Γ' keeps every constraint. Everything here is computed once, offline.
 
@@ -23,7 +25,10 @@ struct RobustMarginInputs {
   lie::Mat3 J{lie::Mat3::Identity()};  ///< inertia [kg·m²]
   double control_period{0.1};     ///< h [s], > 0
   int delay_periods{0};           ///< d ∈ {0, 1}: the torque computed at t_k is applied from t_{k+d}
-  double attitude_error{0.0};     ///< σ_R ≥ d(R̃, R) [rad]
+  /// β ≥ ‖b_R‖, the constant attitude bias [rad]: handled geometrically (the analysis runs in the
+  /// measured frame R B, the cones are tightened by β), not as a torque error
+  double attitude_bias{0.0};
+  double attitude_noise{0.0};     ///< σ_n ≥ the attitude noise angle [rad]
   double rate_error{0.0};         ///< σ_ω ≥ ‖ω̃ − ω‖ [rad/s]
   double quantisation_error{0.0}; ///< ≥ ‖Q(τ) − τ‖ of the command quantiser [N·m]
   double disturbance{0.0};        ///< d̄ ≥ ‖d(t)‖ [N·m]
@@ -32,7 +37,7 @@ struct RobustMarginInputs {
   double gamma_top{1.0};          ///< max over R_g of Γ' (the reduced Γ_d, capped): bounds ‖ω‖, ‖s‖
   double epsilon_gamma{0.1};      ///< ε_Γ of the cap k_p(2 − ε_Γ) ≥ Γ'
   /// Cap on one move of R_g [rad] when delay_periods = 1 (its lag enters w̄ as k_p·Δ_max);
-  /// ≤ 0: derived, the lag then adds half of the other errors to w̄.
+  /// ≤ 0: derived, the lag then adds a quarter of the other errors to w̄.
   double max_reference_step{0.0};
 };
 
@@ -44,7 +49,7 @@ struct RobustMargin {
   double s_max{0.0};            ///< ‖s‖ bound on {V ≤ Γ_top}
   double a{0.0}, b{0.0}, c{0.0};  ///< Ẇ ≤ −a‖ω‖² − b‖s‖² + c‖s‖‖ω‖ + w̄(‖ω‖ + ε‖s‖)
   // the torque-error budget [N·m]
-  double sensor_error{0.0};        ///< k_p σ_R + k_d σ_ω
+  double sensor_error{0.0};        ///< k_p σ_n + k_d σ_ω (the attitude bias is not in it)
   double quantisation_error{0.0};  ///< ‖Q(τ) − τ‖
   double command_error{0.0};       ///< sensor + quantisation: the torque limits are reduced by it
   double hold_error{0.0};          ///< (1 + d) h · L_τ, the staleness of the held torque
@@ -57,9 +62,9 @@ struct RobustMargin {
   double start_allowance{0.0};     ///< growth bound of W over the first d periods (zero torque)
 };
 
-/// e_cmd = k_p σ_R + k_d σ_ω + ‖Q(τ) − τ‖ ≥ ‖τ_cmd − τ_PD(true state)‖: the sensor and
-/// quantisation part of the torque error, by which the torque limits are reduced
-/// (docs/pet-erg.md, section 13, "Error budget").
+/// e_cmd = k_p σ_n + k_d σ_ω + ‖Q(τ) − τ‖ ≥ ‖τ_cmd − τ_PD(R B, ω)‖, B the attitude bias: the
+/// sensor-noise and quantisation part of the torque error, by which the torque limits are
+/// reduced (docs/pet-erg.md, section 13, "Error budget").
 [[nodiscard]] double command_error_bound(const RobustMarginInputs& in) noexcept;
 
 /// Computes the robust margin: the error budget w̄, ε chosen on a grid to minimise

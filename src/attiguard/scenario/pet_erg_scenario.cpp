@@ -111,7 +111,7 @@ void check_torque_threshold(const TableReader& control, const governor::Governor
 sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
   declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
               "attitude_bias", "attitude_noise", "rate_bias", "rate_noise", "delay_periods",
-              "torque_quantum", "seed"});
+              "torque_quantum", "seed", "attitude_bias_bound", "rate_bias_bound"});
   if (!(control_period > 0.0)) {
     t.fail_here("imperfections act on the flight loop: set [control] control_period > 0");
   }
@@ -137,6 +137,14 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   if (s.attitude_error_bound() >= 0.5 * std::numbers::pi) {
     t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
            "attitude bias + noise must stay below pi/2 rad, got " + num(s.attitude_error_bound()));
+  }
+  im.attitude_bias_bound = t.number_or("attitude_bias_bound", s.attitude_bias_b.norm(), NumberRule::non_negative());
+  if (im.attitude_bias_bound < s.attitude_bias_b.norm()) {
+    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + num(s.attitude_bias_b.norm()) + " rad");
+  }
+  im.rate_bias_bound = t.number_or("rate_bias_bound", s.rate_bias_b.norm(), NumberRule::non_negative());
+  if (im.rate_bias_bound < s.rate_bias_b.norm()) {
+    t.fail("rate_bias_bound", "below the norm of rate_bias, " + num(s.rate_bias_b.norm()) + " rad/s");
   }
   im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
   im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
@@ -256,7 +264,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
 
   // Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and
   // V(R_0, ω_0, R_g(0)) ≤ Γ(R_g(0)).
-  const governor::AttitudeGovernor gov = make_governor(root, "", sim::governor_params(sc), sc.cones);
+  const governor::AttitudeGovernor gov = make_governor(root, "", sim::governor_params(sc), sim::governor_cones(sc));
   const auto fail_initial = [&](std::string_view preferred, const std::string& message) {
     if (initial && initial->has(preferred)) {
       initial->fail(preferred, message);

@@ -37,8 +37,9 @@ governor::RobustMarginInputs margin_inputs(const TableReader& control, const sim
   in.J = sc.params.J;
   in.control_period = sc.control_period;
   in.delay_periods = im.delay_periods;
-  in.attitude_error = im.sensor.attitude_error_bound();
-  in.rate_error = im.sensor.rate_error_bound();
+  in.attitude_bias = im.attitude_bias_bound;
+  in.attitude_noise = im.sensor.attitude_noise;
+  in.rate_error = im.rate_bias_bound + im.sensor.rate_noise;
   in.quantisation_error = 0.5 * std::sqrt(3.0) * im.torque_quantum;  // ‖Q(τ) − τ‖ ≤ (√3/2) q
   in.disturbance = im.disturbance.bound;
   in.epsilon_gamma = sc.params.epsilon_gamma;
@@ -63,34 +64,46 @@ governor::RobustMarginInputs margin_inputs(const TableReader& control, const sim
   return in;
 }
 
-/// With robust margins R_g may only stand where Γ_W > Γ_min, i.e. at an angle of more than
-/// gap = arccos(1 − Γ_min/((1 − δ) k_p)) inside each cone: the repulsive field's δ (where its
-/// potential diverges) is moved to that angle (plus 5 %) when it lies closer to the cone's
-/// boundary, and ζ with it, so that the field itself keeps R_g where moves are admissible
-/// (docs/pet-erg.md, section 13, "Navigation field").
-void widen_repulsive_bands(const TableReader& control, const governor::RobustMargin& m,
-                           sim::PetErgScenario& sc) {
+/// The cones the governor enforces with robust margins (docs/pet-erg.md, section 13): each θ_c
+/// tightened by the attitude bias bound β (the true axis lies within β of the axis seen through
+/// the bias), the repulsive levels kept at the same offsets from the new boundary; then, as R_g
+/// may only stand where Γ_W > Γ_min, i.e. more than gap = arccos(1 − Γ_min/((1 − δ) k_p)) inside
+/// each cone, the level δ where the repulsive potential diverges is moved to that angle (plus
+/// 5 %) when it lies closer to the boundary, and ζ with it, so that the navigation field itself
+/// keeps R_g where its moves are admissible.
+std::vector<governor::ConeConstraint> robust_cones(const TableReader& control, const governor::RobustMargin& m,
+                                                   double bias, const sim::PetErgScenario& sc) {
   const double ratio = 1.05 * m.gamma_min / ((1.0 - m.delta) * sc.params.gains.kp);
   if (!(ratio < 2.0)) {
     control.fail("margins", "no admissible set with robust margins: Gamma_min = " + num(m.gamma_min) +
                                 " leaves no attitude inside any cone (kp = " + num(sc.params.gains.kp) + ")");
   }
   const double gap = std::acos(1.0 - ratio);
-  for (std::size_t i = 0; i < sc.cones.size(); ++i) {
-    governor::ConeConstraint& cone = sc.cones[i];
-    if (!(gap < cone.theta_c)) {
+  std::vector<governor::ConeConstraint> cones = sc.cones;
+  for (std::size_t i = 0; i < cones.size(); ++i) {
+    governor::ConeConstraint& cone = cones[i];
+    const double theta_c = cone.theta_c - bias;
+    if (!(gap < theta_c)) {
       control.fail("margins", "no admissible set with robust margins: cones[" + std::to_string(i) +
                                   "] (theta_c = " + num(cone.theta_c * 180.0 / std::numbers::pi) +
+                                  " deg, less the attitude bias bound " + num(bias * 180.0 / std::numbers::pi) +
                                   " deg) leaves no attitude " + num(gap * 180.0 / std::numbers::pi) +
                                   " deg inside it, as Gamma_min = " + num(m.gamma_min) + " needs");
     }
-    const double delta = std::cos(cone.theta_c - gap);
-    if (delta > cone.delta) {
-      const double band = cone.zeta - cone.delta;
-      cone.delta = delta;
-      cone.zeta = delta + band;
+    const double delta_offset = cone.delta - cone.cos_theta_c;
+    const double band = cone.zeta - cone.delta;
+    cone.theta_c = theta_c;
+    cone.cos_theta_c = std::cos(theta_c);
+    cone.sin_theta_c = std::abs(std::sin(theta_c));
+    cone.delta = std::max(cone.cos_theta_c + delta_offset, std::cos(theta_c - gap));
+    cone.zeta = cone.delta + band;
+    if (!(cone.zeta < 1.0)) {
+      control.fail("margins", "no admissible set with robust margins: the repulsive band of cones[" +
+                                  std::to_string(i) + "] moved inwards by the robust gap " +
+                                  num(gap * 180.0 / std::numbers::pi) + " deg leaves no attitude outside it");
     }
   }
+  return cones;
 }
 
 }  // namespace
@@ -152,7 +165,7 @@ void set_robust_margins(const TableReader& control, sim::PetErgScenario& sc) {
            " with the reduced torque limits): reduce the imperfections, the control period or "
            "raise kp, kd");
   }
-  widen_repulsive_bands(control, m, sc);
+  sc.robust_cones = robust_cones(control, m, in.attitude_bias, sc);
   sc.params.robust = m;
 }
 
@@ -162,12 +175,12 @@ void check_robust_desired(const TableReader& desired, const governor::AttitudeGo
   const std::string key = desired.has("attitude") ? "attitude" : "schedule";
   for (int i = 0; i < sc.desired.size(); ++i) {
     const lie::Mat3& R_d = sc.desired[i].R_d;
-    for (std::size_t c = 0; c < sc.cones.size(); ++c) {
-      const double cosine = governor::cone_cosine(sc.cones[c], R_d);
-      if (cosine < sc.cones[c].zeta) {
+    for (std::size_t c = 0; c < sc.robust_cones.size(); ++c) {
+      const double cosine = governor::cone_cosine(sc.robust_cones[c], R_d);
+      if (cosine < sc.robust_cones[c].zeta) {
         desired.fail(key, "with robust margins this desired attitude lies in the widened repulsive band of cones[" +
                               std::to_string(c) + "] (a_c^T R_d a_b = " + num(cosine) + " < zeta = " +
-                              num(sc.cones[c].zeta) + ", Gamma_min = " + num(m.gamma_min) +
+                              num(sc.robust_cones[c].zeta) + ", Gamma_min = " + num(m.gamma_min) +
                               "): move R_d away from the cone or reduce the imperfections");
       }
     }
@@ -184,7 +197,9 @@ void check_robust_desired(const TableReader& desired, const governor::AttitudeGo
 std::string robust_initial_problem(const governor::AttitudeGovernor& gov, const sim::PetErgScenario& sc) {
   const governor::RobustMargin& m = *sc.params.robust;
   const double G0 = gov.gamma(sc.R_g0);
-  const double W0 = gov.level(sc.R0_ib, sc.omega0_b, sc.R_g0) + m.start_allowance;
+  // The analysis runs in the frame seen through the attitude bias B (section 13).
+  const lie::Mat3 R0_seen = sc.R0_ib * lie::exp(sc.imperfections.sensor.attitude_bias_b);
+  const double W0 = gov.level(R0_seen, sc.omega0_b, sc.R_g0) + m.start_allowance;
   if (G0 > m.gamma_min && W0 <= G0) return {};
   return "initial state not admissible with robust margins: W(0) + start allowance = " + num(W0) +
          ", Gamma_W(R_g(0)) = " + num(G0) + ", Gamma_min = " + num(m.gamma_min) +

@@ -91,8 +91,9 @@ void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R
                     PetErgResult& r) {
   r.reference_distance_left = lie::distance(R_g_end, R_d_end);
   r.active_cones.clear();
-  for (std::size_t i = 0; i < sc.cones.size(); ++i) {
-    if (governor::cone_cosine(sc.cones[i], R_g_end) < sc.cones[i].zeta) {
+  const std::vector<governor::ConeConstraint>& cones = governor_cones(sc);  // the field's bands
+  for (std::size_t i = 0; i < cones.size(); ++i) {
+    if (governor::cone_cosine(cones[i], R_g_end) < cones[i].zeta) {
       r.active_cones.push_back(static_cast<int>(i));
     }
   }
@@ -254,7 +255,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
 /// only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight loop").
 PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
   const governor::GovernorParams params = governor_params(sc);
-  governor::AttitudeGovernor gov(params, sc.cones);
+  governor::AttitudeGovernor gov(params, governor_cones(sc));
   const dynamics::RigidBody body(sc.params.J);
   PetErgResult r = initial_result(sc, gov);
 
@@ -296,9 +297,16 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
     return d;
   };
   // The governor's view of the current state with the torque actually applied.
+  // With robust margins the level W is that of the attitude seen through the bias, R B
+  // (docs/pet-erg.md, section 13): the invariant the margins guarantee.
+  const Mat3 bias_frame = params.robust ? lie::exp(im.sensor.attitude_bias_b) : Mat3::Identity();
   auto view = [&](const PetErgState& s, const Mat3& R_d) {
-    GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, gov.trigger_flag());
+    GovernorOutput out = gov.evaluate(s.R[0] * bias_frame, s.x, s.R[1], R_d, gov.trigger_flag());
     out.tau_b = tau_held;
+    // the true constraints (with robust margins the governor enforces tightened cones)
+    for (std::size_t i = 0; i < sc.cones.size(); ++i) {
+      out.margins[i] = governor::pointing_margin(sc.cones[i], s.R[0]);
+    }
     return out;
   };
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {

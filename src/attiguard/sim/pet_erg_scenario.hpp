@@ -24,6 +24,10 @@ struct PetErgImperfections {
   dynamics::AttitudeSensor sensor;          ///< biases and bounded noises of R and ω
   int delay_periods{0};                     ///< 0 or 1: τ_k applied from t_{k+1} on
   double torque_quantum{0.0};               ///< q [N·m] of control::quantize_torque (0: none)
+  /// Declared bounds on the biases the robust margins assume (docs/pet-erg.md, section 13):
+  /// ≥ ‖attitude_bias‖ [rad] and ≥ ‖rate_bias‖ [rad/s]; default the biases' own norms.
+  double attitude_bias_bound{0.0};
+  double rate_bias_bound{0.0};
 };
 
 /// Everything a `pet_erg` run needs, validated (scenario::parse_pet_erg also checks the
@@ -51,11 +55,21 @@ struct PetErgScenario {
   /// wheel polytope with each u_max,i − ‖r_i‖ e_cmd (whose Γ_d is robust_polytope_gamma_d).
   double robust_tau_max{0.0};
   double robust_polytope_gamma_d{0.0};
+  /// With robust margins, the cones the governor enforces: each θ_c tightened by the attitude
+  /// bias bound and its repulsive band moved inwards as Γ_min needs (section 13). `cones` stay
+  /// the true constraints, on which the margins are reported.
+  std::vector<governor::ConeConstraint> robust_cones;
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
 };
+
+/// The cones the governor of a run enforces: `cones`, or with robust margins `robust_cones`
+/// (docs/pet-erg.md, section 13).
+[[nodiscard]] inline const std::vector<governor::ConeConstraint>& governor_cones(const PetErgScenario& sc) {
+  return sc.params.robust ? sc.robust_cones : sc.cones;
+}
 
 /// The parameters the governor of a run is built with (docs/pet-erg.md, sections 10 and 13): in
 /// the flight loop the bounded reference step; with robust margins the reduced torque limits.

@@ -103,7 +103,8 @@ TEST(AdversarialDisturbance, StaysWithinTheBoundAndReachesItAtEveryNonDegenerate
   // Fully degenerate for aim (a): at rest on the reference, V̈ = dᵀJ⁻¹d is largest along J's
   // minor axis.
   const Mat3 J = Vec3(3.0, 1.0, 2.0).asDiagonal();
-  const Vec3 d = adversarial_torque(Mat3::Identity(), Vec3::Zero(), Mat3::Identity(), J, {}, 0.2, 1.0);
+  const Vec3 d =
+      adversarial_torque(Mat3::Identity(), Vec3::Zero(), Mat3::Identity(), J, {}, 0.2, 1.0);
   EXPECT_NEAR(std::abs(d.y()), 0.2, 1e-15);
 }
 
@@ -152,10 +153,8 @@ TEST(AdversarialDisturbance, WithWeightZeroItMinimisesTheNearestConesMarginAccel
           << trial << " " << k;
     }
     // And it lowers m̈ against no disturbance (the direction's sign is right).
-    EXPECT_LT(worst, margin_ddot(p, cone, R, w, Vec3::Zero()) - 0.5 * bound *
-                                                                     (p.J.inverse() *
-                                                                      cone.axis_b.cross(R.transpose() * cone.direction_i))
-                                                                         .norm())
+    const Vec3 v = cone.axis_b.cross(R.transpose() * cone.direction_i);
+    EXPECT_LT(worst, margin_ddot(p, cone, R, w, Vec3::Zero()) - 0.5 * bound * (p.J.inverse() * v).norm())
         << trial;
   }
 }

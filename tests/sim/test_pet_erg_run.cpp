@@ -515,7 +515,8 @@ TEST(PetErgAdversary, RefusesTheKeysItDoesNotUseAndBadSettings) {
     ADD_FAILURE() << "accepted: " << extra;
     return std::string();
   };
-  const std::string adv = "\n[imperfections]\ndisturbance = \"adversarial\"\ndisturbance_bound = 0.05\n";
+  const std::string adv =
+      "\n[imperfections]\ndisturbance = \"adversarial\"\ndisturbance_bound = 0.05\n";
   std::string msg = refused(adv + "disturbance_period = 20.0\n");
   EXPECT_NE(msg.find("imperfections.disturbance_period: not used by disturbance = \"adversarial\""),
             std::string::npos) << msg;
@@ -524,8 +525,10 @@ TEST(PetErgAdversary, RefusesTheKeysItDoesNotUseAndBadSettings) {
   msg = refused(adv + "adversary_weight = 1.5\n");
   EXPECT_NE(msg.find("imperfections.adversary_weight:"), std::string::npos) << msg;
   msg = refused(adv + "disturbance_update = \"always\"\n");
-  EXPECT_NE(msg.find("imperfections.disturbance_update: must be one of \"control\", \"continuous\""),
-            std::string::npos) << msg;
+  EXPECT_NE(
+      msg.find("imperfections.disturbance_update: must be one of \"control\", \"continuous\""),
+      std::string::npos)
+      << msg;
   msg = refused("\n[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.05\n"
                 "adversary_weight = 0.5\n");
   EXPECT_NE(msg.find("imperfections.adversary_weight: only used by disturbance = \"adversarial\""),

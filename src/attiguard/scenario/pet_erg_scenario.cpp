@@ -130,8 +130,8 @@ void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
 /// the flight loop (control_period > 0).
 sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
   declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
-              "disturbance_update", "adversary_weight", "attitude_bias", "attitude_noise", "rate_bias", "rate_noise", "delay_periods",
-              "torque_quantum", "seed"});
+              "disturbance_update", "adversary_weight", "attitude_bias", "attitude_noise",
+              "rate_bias", "rate_noise", "delay_periods", "torque_quantum", "seed"});
   if (!(control_period > 0.0)) {
     t.fail_here("imperfections act on the flight loop: set [control] control_period > 0");
   }

@@ -289,7 +289,8 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
   // The adversarial disturbance (docs/pet-erg.md, section 11): from the true state and R_g,
   // held from each control instant or recomputed at every evaluation of the field.
   const bool adversarial = im.disturbance.kind == dynamics::DisturbanceKind::adversarial;
-  const bool adversary_continuous = adversarial && im.adversary.update == DisturbanceUpdate::continuous;
+  const bool adversary_continuous =
+      adversarial && im.adversary.update == DisturbanceUpdate::continuous;
   const AdversaryModel adversary =
       make_adversary(sc.params.J, sc.cones, im.disturbance.bound, im.adversary.weight);
   Vec3 disturbance_held = Vec3::Zero();

@@ -11,6 +11,7 @@
 // new covers every standard container, std::function, std::string and exception object.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -34,6 +35,7 @@
 #include "attiguard/lie/axis_angle.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/sim/adversarial_disturbance.hpp"
 
 namespace {
 
@@ -228,6 +230,46 @@ TEST(AllocationFree, WheelFlightLoopWithImperfections) {
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in the wheel flight loop";
   EXPECT_LT(lie::distance(R_ib, R_d), 0.05);  // the loop really flew the manoeuvre
+}
+
+// The adversarial disturbance (docs/pet-erg.md, section 11), header-only on the flight layers:
+// evaluated like the flight loop's vector field, at every sub-step of the plant, next to the
+// governor's step.
+static_assert(noexcept(sim::adversarial_torque(std::declval<const sim::AdversaryModel&>(),
+                                               std::declval<const Mat3&>(),
+                                               std::declval<const Vec3&>(),
+                                               std::declval<const Mat3&>())));
+
+TEST(AllocationFree, AdversarialDisturbanceInAFlightLoop) {
+  governor::GovernorParams params;
+  params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
+  params.tau_max = 2.5;
+  params.bounded_step = true;
+  const std::array cones{governor::keep_in_cone(Vec3::UnitZ(), Vec3(-0.791, 0.061, -0.609),
+                                                160.0 * std::numbers::pi / 180.0)};
+  governor::AttitudeGovernor gov(params, cones);
+  const sim::AdversaryModel adversary = sim::make_adversary(params.J, cones, 0.05, 0.5);
+  const dynamics::RigidBody body(params.J);
+  const Mat3 R_d = lie::rotation_from_axis_angle({Vec3::UnitY(), std::numbers::pi / 2.0});
+  Mat3 R_ib = Mat3::Identity();
+  Vec3 omega_b(0.2, 0.3, 0.4);
+  const double dt = 0.1;
+  constexpr int substeps = 10;
+  const double h = dt / substeps;
+  double largest = 0.0;
+  g_allocations = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Vec3 tau = counted([&] { return Vec3(gov.step(k * dt, R_ib, omega_b, R_d).tau_b); });
+    for (int s = 0; s < substeps; ++s) {
+      const Vec3 d = counted(
+          [&] { return sim::adversarial_torque(adversary, R_ib, omega_b, gov.reference()); });
+      largest = std::max(largest, d.norm());
+      omega_b += h * body.angular_acceleration(omega_b, tau + d);
+      R_ib = R_ib * lie::exp(h * omega_b);
+    }
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations with the adversarial disturbance";
+  EXPECT_NEAR(largest, 0.05, 1e-12);  // the adversary really acted, at its bound
 }
 
 TEST(AllocationFree, QuaternionPidStepTrackingATurn) {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -448,6 +449,97 @@ TEST(PetErgImperfections, RefusedWithoutTheFlightLoopOrWithoutABound) {
               std::string::npos)
         << e.what();
   }
+}
+
+// ---- The adversarial disturbance (issue 14, acceptance; docs/pet-erg.md, section 11) ----
+
+std::string adversarial_text(double bound, const std::string& update, double weight) {
+  return "\n[imperfections]\ndisturbance = \"adversarial\"\ndisturbance_bound = " +
+         std::to_string(bound) + "\ndisturbance_update = \"" + update +
+         "\"\nadversary_weight = " + std::to_string(weight) + "\n";
+}
+
+TEST(PetErgAdversary, WorseThanAConstantDisturbanceOfTheSameBoundAlongAnyOfTwentyAxes) {
+  // Paper scenario, 10 Hz flight loop, d̄ = 0.05 N·m. The constant disturbance along 20 random
+  // fixed axes: the adversary (pure V aim, w = 1, both update modes) gives a smaller minimum
+  // pointing margin and a larger max(V − Γ) than every one of them (figures: docs/pet-erg.md,
+  // section 11).
+  std::mt19937_64 gen(14);
+  std::normal_distribution<double> n(0.0, 1.0);
+  double constant_min_margin = 1e300;
+  double constant_max_V_minus_Gamma = -1e300;
+  for (int i = 0; i < 20; ++i) {
+    const Vec3 a = Vec3(n(gen), n(gen), n(gen)).normalized();
+    const PetErgResult r = simulate_pet_erg(paper_with(
+        "\n[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.05\n"
+        "disturbance_axis_b = [" + std::to_string(a.x()) + ", " + std::to_string(a.y()) + ", " +
+        std::to_string(a.z()) + "]\n"));
+    constant_min_margin = std::min(constant_min_margin, r.min_pointing_margin);
+    constant_max_V_minus_Gamma = std::max(constant_max_V_minus_Gamma, r.max_V_minus_Gamma);
+  }
+  for (const std::string update : {"control", "continuous"}) {
+    const sim::PetErgScenario sc = paper_with(adversarial_text(0.05, update, 1.0));
+    EXPECT_EQ(sc.imperfections.disturbance.kind, dynamics::DisturbanceKind::adversarial);
+    const PetErgResult r = simulate_pet_erg(sc);
+    std::printf("[ figures ] adversary (%s, w = 1): min margin %.5f, max(V - Gamma) %.5f; constant "
+                "over 20 axes: min margin %.5f, max(V - Gamma) %.5f\n",
+                update.c_str(), r.min_pointing_margin, r.max_V_minus_Gamma, constant_min_margin,
+                constant_max_V_minus_Gamma);
+    EXPECT_EQ(pet_erg_summary(sc, r)["imperfections"]["disturbance"], "adversarial");
+    EXPECT_LT(r.min_pointing_margin, constant_min_margin) << update;
+    EXPECT_GT(r.max_V_minus_Gamma, constant_max_V_minus_Gamma) << update;
+    EXPECT_GE(r.min_pointing_margin, 0.0) << update;  // the nominal margins still hold here
+  }
+}
+
+TEST(PetErgAdversary, TheUpdateModesAndTheWeightChangeTheRun) {
+  const PetErgResult held = simulate_pet_erg(paper_with(adversarial_text(0.05, "control", 1.0)));
+  const PetErgResult live = simulate_pet_erg(paper_with(adversarial_text(0.05, "continuous", 1.0)));
+  const PetErgResult cone = simulate_pet_erg(paper_with(adversarial_text(0.05, "control", 0.0)));
+  EXPECT_NE(held.min_pointing_margin, live.min_pointing_margin);
+  EXPECT_NE(held.min_pointing_margin, cone.min_pointing_margin);
+  // Defaults: held over the control period, w = 0.5.
+  const sim::PetErgScenario sc = paper_with(
+      "\n[imperfections]\ndisturbance = \"adversarial\"\ndisturbance_bound = 0.05\n");
+  EXPECT_EQ(sc.imperfections.adversary.update, DisturbanceUpdate::control);
+  EXPECT_EQ(sc.imperfections.adversary.weight, 0.5);
+}
+
+TEST(PetErgAdversary, RefusesTheKeysItDoesNotUseAndBadSettings) {
+  const auto refused = [](const std::string& extra) {
+    try {
+      (void)paper_with(extra);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "accepted: " << extra;
+    return std::string();
+  };
+  const std::string adv =
+      "\n[imperfections]\ndisturbance = \"adversarial\"\ndisturbance_bound = 0.05\n";
+  std::string msg = refused(adv + "disturbance_period = 20.0\n");
+  EXPECT_NE(msg.find("imperfections.disturbance_period: not used by disturbance = \"adversarial\""),
+            std::string::npos) << msg;
+  msg = refused(adv + "disturbance_axis_b = [0.0, 0.0, 1.0]\n");
+  EXPECT_NE(msg.find("imperfections.disturbance_axis_b: not used by"), std::string::npos) << msg;
+  msg = refused(adv + "adversary_weight = 1.5\n");
+  EXPECT_NE(msg.find("imperfections.adversary_weight:"), std::string::npos) << msg;
+  msg = refused(adv + "disturbance_update = \"always\"\n");
+  EXPECT_NE(
+      msg.find("imperfections.disturbance_update: must be one of \"control\", \"continuous\""),
+      std::string::npos)
+      << msg;
+  msg = refused("\n[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.05\n"
+                "adversary_weight = 0.5\n");
+  EXPECT_NE(msg.find("imperfections.adversary_weight: only used by disturbance = \"adversarial\""),
+            std::string::npos) << msg;
+  msg = refused(adv.substr(0, adv.find("disturbance_bound")));
+  EXPECT_NE(msg.find("a disturbance needs disturbance_bound > 0"), std::string::npos) << msg;
+  // Only in the flight loop.
+  std::string text = example_text("pet_erg_paper.toml") + adv;
+  msg = input_error(scenario::parse_document(text, "pet_erg_paper.toml"));
+  EXPECT_NE(msg.find("imperfections act on the flight loop"), std::string::npos) << msg;
+  for (const char c : msg) EXPECT_NE(c, '\n');
 }
 
 // ---- Reaction-wheel arrays (issue 14, deliverable 3; docs/pet-erg.md, section 12) ----

@@ -106,12 +106,34 @@ void check_torque_threshold(const TableReader& control, const governor::Governor
   }
 }
 
+/// The keys of the adversarial disturbance, and the keys it does not use refused with it
+/// (docs/pet-erg.md, section 11, "Adversarial disturbance"; docs/scenario-format.md, "pet_erg").
+void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
+                     sim::AdversarySettings& adversary) {
+  const bool adversarial = kind == dynamics::DisturbanceKind::adversarial;
+  for (const std::string_view key : {"disturbance_axis_b", "disturbance_period"}) {
+    if (adversarial && t.has(key)) {
+      t.fail(key, "not used by disturbance = \"adversarial\" (its direction is chosen from the "
+                  "state at every update): remove it");
+    }
+  }
+  for (const std::string_view key : {"disturbance_update", "adversary_weight"}) {
+    if (!adversarial && t.has(key)) {
+      t.fail(key, "only used by disturbance = \"adversarial\"");
+    }
+  }
+  adversary.update = enum_or(t, "disturbance_update", sim::kDisturbanceUpdateNames,
+                             sim::DisturbanceUpdate::control);
+  adversary.weight = t.number_or("adversary_weight", 0.5, NumberRule::range(0.0, 1.0));
+}
+
 /// [imperfections] (docs/pet-erg.md, section 11; docs/scenario-format.md, "pet_erg"): only for
 /// the flight loop (control_period > 0).
 sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
   declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
-              "attitude_bias", "attitude_noise", "rate_bias", "rate_noise", "delay_periods",
-              "torque_quantum", "seed", "attitude_bias_bound", "rate_bias_bound"});
+              "disturbance_update", "adversary_weight", "attitude_bias", "attitude_noise",
+              "rate_bias", "rate_noise", "delay_periods", "torque_quantum", "seed",
+              "attitude_bias_bound", "rate_bias_bound"});
   if (!(control_period > 0.0)) {
     t.fail_here("imperfections act on the flight loop: set [control] control_period > 0");
   }
@@ -128,6 +150,7 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
   d.hold = control_period;
   d.seed = seed;
+  parse_adversary(t, d.kind, im.adversary);
   dynamics::AttitudeSensor& s = im.sensor;
   if (t.has("attitude_bias")) s.attitude_bias_b = t.vector3("attitude_bias");
   s.attitude_noise = t.number_or("attitude_noise", 0.0, NumberRule::non_negative());

@@ -13,6 +13,7 @@
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
+#include "attiguard/sim/adversarial_disturbance.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
 namespace attiguard::sim {
@@ -285,13 +286,26 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
     return h;
   };
 
+  // The adversarial disturbance (docs/pet-erg.md, section 11): from the true state and R_g,
+  // held from each control instant or recomputed at every evaluation of the field.
+  const bool adversarial = im.disturbance.kind == dynamics::DisturbanceKind::adversarial;
+  const bool adversary_continuous =
+      adversarial && im.adversary.update == DisturbanceUpdate::continuous;
+  const AdversaryModel adversary =
+      make_adversary(sc.params.J, sc.cones, im.disturbance.bound, im.adversary.weight);
+  Vec3 disturbance_held = Vec3::Zero();
+  auto disturbance = [&](double t, const PetErgState& s) -> Vec3 {
+    if (adversary_continuous) return adversarial_torque(adversary, s.R[0], s.x, s.R[1]);
+    return adversarial ? disturbance_held : im.disturbance.at(t);
+  };
+
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3).setZero();  // R_g changes only at the control instants
-    // eq. (1) with the held torque and the disturbance d(t) (docs/pet-erg.md, section 11) and
+    // eq. (1) with the held torque and the disturbance d (docs/pet-erg.md, section 11) and
     // the wheels' gyroscopic torque (A h) × ω (section 12)
-    Vec3 tau = tau_held + im.disturbance.at(t);
+    Vec3 tau = tau_held + disturbance(t, s);
     if (wheels) tau += array.body_momentum(momenta(t)).cross(s.x);
     d.segment<3>(6) = body.angular_acceleration(s.x, tau);
     return d;
@@ -348,6 +362,7 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
       tau_held = command;
     }
     s.R[1] = params.mode == GovernorMode::none ? sc.desired.at(t) : gov.reference();
+    if (adversarial) disturbance_held = adversarial_torque(adversary, s.R[0], s.x, s.R[1]);
     if (out.sampled) {
       ++r.samples;
       r.samples_updating += out.trigger ? 1 : 0;

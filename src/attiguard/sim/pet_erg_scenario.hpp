@@ -15,12 +15,14 @@
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/sim/adversarial_disturbance.hpp"
 
 namespace attiguard::sim {
 
 /// The imperfections of the flight loop, `[imperfections]` (docs/pet-erg.md, section 11).
 struct PetErgImperfections {
   dynamics::DisturbanceTorque disturbance;  ///< d(t) on the plant, ‖d‖ ≤ d̄
+  AdversarySettings adversary;              ///< update and weight of `adversarial`
   dynamics::AttitudeSensor sensor;          ///< biases and bounded noises of R and ω
   int delay_periods{0};                     ///< 0 or 1: τ_k applied from t_{k+1} on
   double torque_quantum{0.0};               ///< q [N·m] of control::quantize_torque (0: none)

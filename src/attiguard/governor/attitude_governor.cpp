@@ -166,6 +166,8 @@ void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
   started_ = true;
   t_prev_ = t0;
   R_g_ = R_g0;
+  last_move_.setZero();
+  move_scale_ = 1.0;
   flag_ = params_.mode == GovernorMode::continuous;
   clock_ = SamplingClock(t0, params_.Ts);
   out_ = GovernorOutput{};
@@ -173,22 +175,26 @@ void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
   out_.gamma_d = gamma_d_;
 }
 
-Mat3 AttitudeGovernor::bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept {
+Mat3 AttitudeGovernor::bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt, double scale,
+                                    Vec3& applied) const noexcept {
   Vec3 move = dt * out_.xi_g;
   const double length = move.norm();
-  // ρ_n of the previous call, the direction of ξ; with robust margins also Δ_max (section 13)
+  // ρ_n of the previous call, the direction of ξ; with robust margins also Δ_max (section 13);
+  // times the reversal scale
   const double limit =
-      params_.robust ? std::min(out_.rho.norm(), params_.robust->max_reference_step) : out_.rho.norm();
+      scale * (params_.robust ? std::min(out_.rho.norm(), params_.robust->max_reference_step) : out_.rho.norm());
   if (length > limit) {
     move *= limit / length;
   }
   for (int halving = 0; halving < kMaxMoveHalvings; ++halving) {
     const Mat3 candidate = R_g_ * lie::exp(move);
     if (admissible_move(R_ib, omega_b, candidate)) {
+      applied = move;
       return candidate;
     }
     move *= 0.5;
   }
+  applied.setZero();
   return R_g_;
 }
 
@@ -203,7 +209,11 @@ const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const V
     const double dt = t - t_prev_;
     if (dt > 0.0 && out_.xi_g.squaredNorm() > 0.0) {
       if (params_.bounded_step) {
-        R_g_ = bounded_move(R_ib, omega_b, dt);
+        // A move against the previous one halves the length allowed, a move along it lets the
+        // length grow back (×1.25 up to 1): the reference settles at an equilibrium of the field
+        // instead of jumping across it (docs/pet-erg.md, "Discrete reference update").
+        move_scale_ = last_move_.dot(out_.xi_g) < 0.0 ? 0.5 * move_scale_ : std::min(1.0, 1.25 * move_scale_);
+        R_g_ = bounded_move(R_ib, omega_b, dt, move_scale_, last_move_);
       } else {
         const Mat3 candidate = R_g_ * lie::exp(dt * out_.xi_g);
         // Zero-order hold of the rate between calls; keep V ≤ Γ at the call instants.

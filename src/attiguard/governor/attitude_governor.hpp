@@ -161,7 +161,9 @@ class AttitudeGovernor {
   /// Halvings of a reference move tried before it is dropped (bounded_step; 2⁻³⁰ of a step).
   static constexpr int kMaxMoveHalvings = 30;
   /// The bounded move of R_g over dt (docs/pet-erg.md, "Discrete reference update").
-  [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt) const noexcept;
+  /// `scale` ∈ (0, 1] shortens the allowed length; `applied` receives the move taken (0 if none).
+  [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt, double scale,
+                                  Vec3& applied) const noexcept;
   /// The level the decisions use: V, or W + e_W with robust margins (section 13).
   [[nodiscard]] double decision_level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// May R_g be moved to `candidate` for the measured (R, ω)? V ≤ Γ there; with robust margins
@@ -178,6 +180,8 @@ class AttitudeGovernor {
   bool started_{false};
   double t_prev_{0.0};
   Mat3 R_g_{Mat3::Identity()};
+  Vec3 last_move_{Vec3::Zero()};  ///< the last move of R_g (bounded_step), body frame of R_g
+  double move_scale_{1.0};        ///< reversal scale of the bounded step
   bool flag_{true};
   SamplingClock clock_;
   GovernorOutput out_;

@@ -80,25 +80,27 @@ fs::path slew_with(const fs::path& dir, const std::string& tune) {
 // The [tune] table gives budget, seed, ranges and plot; flags given override its keys.
 TEST(TuneCli, TuneTableGivesTheSettingsAndFlagsOverrideThem) {
   const fs::path dir = test::fresh_dir("tune_table");
-  const fs::path file = slew_with(dir, "[tune]\nbudget = 6\nseed = 3\nplot = false\n[tune.ranges]\n"
+  const fs::path file = slew_with(dir, "[tune]\nbudget = 6\nseed = 3\nbatch = 2\nplot = false\n[tune.ranges]\n"
                                        "\"control.kp\" = [1.0, 5.0]\n\"control.kd\" = [5.0, 20.0]\n");
   const auto r = test::run_cli("tune '" + file.string() + "' --out '" + (dir / "table").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = read_json(dir / "table" / "tune.json");
   EXPECT_EQ(j["evaluated"], 6);
   EXPECT_EQ(j["seed"], 3);
+  EXPECT_EQ(j["batch"], 2);
   ASSERT_EQ(j["parameters"].size(), 2u);
   EXPECT_EQ(j["parameters"][0]["key"], "control.kd");  // in key order
   EXPECT_EQ(j["parameters"][0]["max"], 20.0);
   EXPECT_EQ(j["parameters"][1]["key"], "control.kp");
   EXPECT_EQ(j["parameters"][1]["min"], 1.0);
   EXPECT_FALSE(fs::exists(dir / "table" / "tune_tradeoff.png"));  // plot = false
-  const auto o = test::run_cli("tune '" + file.string() + "' --budget 8 --seed 4 --range erg.kappa=1:10 --no-plot --out '" +
+  const auto o = test::run_cli("tune '" + file.string() + "' --budget 8 --seed 4 --batch 3 --range erg.kappa=1:10 --no-plot --out '" +
                                (dir / "flags").string() + "'");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const nlohmann::json k = read_json(dir / "flags" / "tune.json");
   EXPECT_EQ(k["evaluated"], 8);
   EXPECT_EQ(k["seed"], 4);
+  EXPECT_EQ(k["batch"], 3);
   ASSERT_EQ(k["parameters"].size(), 1u);
   EXPECT_EQ(k["parameters"][0]["key"], "erg.kappa");
   // best.toml keeps the [tune] table: `attiguard run` and `check` ignore it.

@@ -46,17 +46,19 @@ TEST(TuneTable, AbsentTableGivesNothing) {
   const TuneTable t = read_tune_table(parse_document(kBase, "t.toml"));
   EXPECT_FALSE(t.budget.has_value());
   EXPECT_FALSE(t.seed.has_value());
+  EXPECT_FALSE(t.batch.has_value());
   EXPECT_FALSE(t.plot.has_value());
   EXPECT_TRUE(t.ranges.empty());
 }
 
 TEST(TuneTable, ReadsEveryKeyAndTheRangesInKeyOrder) {
   const TuneTable t = read_tune_table(parse_document(
-      kBase + "[tune]\nbudget = 40\nseed = 7\nplot = false\n[tune.ranges]\n"
+      kBase + "[tune]\nbudget = 40\nseed = 7\nbatch = 6\nplot = false\n[tune.ranges]\n"
               "\"erg.kappa\" = [0.5, 50]\n\"control.kp\" = [0.1, 10]\n",
       "t.toml"));
   EXPECT_EQ(t.budget, 40);
   EXPECT_EQ(t.seed, 7u);
+  EXPECT_EQ(t.batch, 6);
   EXPECT_EQ(t.plot, false);
   ASSERT_EQ(t.ranges.size(), 2u);
   EXPECT_EQ(t.ranges[0].key, "control.kp");
@@ -70,9 +72,10 @@ TEST(TuneTable, ReadsEveryKeyAndTheRangesInKeyOrder) {
 TEST(TuneTable, BadValuesAreLocatedOneLineErrors) {
   EXPECT_EQ(error_of("[tune]\nbudget = 3\n"), "t.toml:19:10: tune.budget: must be in [4, 9223372036854775807], got 3");
   EXPECT_EQ(error_of("[tune]\nseed = -1\n"), "t.toml:19:8: tune.seed: must be in [0, 9223372036854775807], got -1");
+  EXPECT_EQ(error_of("[tune]\nbatch = 0\n"), "t.toml:19:9: tune.batch: must be in [1, 9223372036854775807], got 0");
   EXPECT_EQ(error_of("[tune]\nplot = 1\n"), "t.toml:19:8: tune.plot: expected a boolean (true or false), got an integer");
   EXPECT_EQ(error_of("[tune]\nbudgett = 40\n"),
-            "t.toml:19:1: tune.budgett: unknown key 'budgett' (expected one of: budget, plot, ranges, seed); "
+            "t.toml:19:1: tune.budgett: unknown key 'budgett' (expected one of: batch, budget, plot, ranges, seed); "
             "did you mean 'budget'?");
   EXPECT_EQ(error_of("[tune]\nranges = {}\n"),
             "t.toml:19:10: tune.ranges: [tune] ranges must list at least one KEY = [MIN, MAX]");

@@ -178,7 +178,7 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
   if (s.parameters.empty()) throw InputError("attiguard tune: no parameter to search");
   if (s.budget < 4) throw InputError("--budget: must be at least 4 runs");
   if (s.threads < 1) throw InputError("--threads: must be at least 1");
-  if (s.batch < 1) throw InputError("attiguard tune: the batch size must be at least 1");
+  if (s.batch < 1) throw InputError("--batch: must be at least 1");
   for (const TuneParameter& p : s.parameters) {
     if (!(p.min > 0.0) || !(p.min <= p.max) || !std::isfinite(p.max)) {
       throw InputError("attiguard tune: " + p.key + ": range must satisfy 0 < min <= max");
@@ -257,8 +257,9 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
   j["parameters"] = space;
   j["budget"] = s.budget;
   j["seed"] = s.seed;
+  j["batch"] = s.batch;
   j["search"] = "Latin hypercube (log-uniform) of budget/2 points, then "
-                "batches perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
+                "batches of `batch` points perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
   long admissible = 0;
   for (const TunePoint& p : r.points) admissible += p.admissible() ? 1 : 0;
   j["evaluated"] = r.points.size();

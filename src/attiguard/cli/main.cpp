@@ -225,6 +225,11 @@ int run(int argc, char** argv) {
   tune_cmd->add_option("--threads", tune_args.threads, "Worker threads per process")->type_name("T");
   long tune_budget = 64;  // flags given override the scenario's [tune] table (tune_command.hpp)
   tune_cmd->add_option("--budget", tune_budget, "Runs in all (default: [tune] budget, else 64)")->type_name("RUNS");
+  long tune_batch = 4;
+  tune_cmd->add_option("--batch", tune_batch,
+                       "Points per refinement batch (default: [tune] batch, else 4); the search "
+                       "depends on it, not on the ranks and threads")
+      ->type_name("B");
   std::string tune_seed_text = "1";
   tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default: [tune] seed, else 1)")
       ->type_name("S");
@@ -268,6 +273,7 @@ int run(int argc, char** argv) {
   if (tune_cmd->parsed()) {
     if (tune_cmd->count("--seed") > 0) tune_args.seed = parse_seed(tune_seed_text);
     if (tune_cmd->count("--budget") > 0) tune_args.budget = tune_budget;
+    if (tune_cmd->count("--batch") > 0) tune_args.batch = tune_batch;
     if (tune_no_plot) tune_args.plot = false;
   }
   attiguard::scenario::set_work_limits(limits);

@@ -39,6 +39,7 @@ app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneT
   if (s.parameters.empty()) s.parameters = app::default_tune_parameters(nominal);
   s.budget = args.budget.value_or(table.budget.value_or(64));
   s.seed = args.seed.value_or(table.seed.value_or(1));
+  s.batch = args.batch.value_or(table.batch.value_or(4));
   s.threads = args.threads;
   return s;
 }

@@ -48,6 +48,7 @@ TuneTable read_tune_table(const Document& doc) {
   if (t->has("seed")) {
     out.seed = static_cast<std::uint64_t>(t->integer("seed", 0, std::numeric_limits<long>::max()));
   }
+  if (t->has("batch")) out.batch = t->integer("batch", 1, std::numeric_limits<long>::max());
   if (t->has("plot")) out.plot = t->boolean_or("plot", true);
   if (t->has("ranges")) {
     const TableReader ranges = t->table("ranges");

@@ -7,6 +7,7 @@
 ///   [tune]
 ///   budget = 400                 # runs in all, >= 4
 ///   seed = 7                     # 0 to 2^63 - 1
+///   batch = 8                    # points per refinement batch, >= 1 (default 4)
 ///   plot = false
 ///   [tune.ranges]                # replaces the default space
 ///   "control.kp" = [0.1, 10]     # KEY = [MIN, MAX], 0 < MIN <= MAX, searched log-uniformly
@@ -31,12 +32,13 @@ struct TuneRange {
 struct TuneTable {
   std::optional<long> budget;
   std::optional<std::uint64_t> seed;
+  std::optional<long> batch;
   std::optional<bool> plot;
   std::vector<TuneRange> ranges;  ///< in key order; empty when `ranges` is absent
 };
 
 /// Reads `[tune]` of `doc` (all keys optional; nothing when the table is absent). Throws
-/// InputError "FILE:LINE:COL: tune.KEY: …" for a budget below 4, a seed out of range, a range
+/// InputError "FILE:LINE:COL: tune.KEY: …" for a budget below 4, a batch below 1, a seed out of range, a range
 /// that is not [MIN, MAX] with 0 < MIN <= MAX, a range key that cannot be set in the scenario
 /// (scenario/document_edit.hpp, set_number), an empty `ranges` table, or an unknown key.
 [[nodiscard]] TuneTable read_tune_table(const Document& doc);

@@ -44,7 +44,7 @@ app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneT
   return s;
 }
 
-/// Prints the best point and the scenario's own result, and writes DIR/best.toml.
+/// Prints the best point and the scenario's own result, and writes the best scenario (DIR/best).
 void report_best(const TuneArguments& args, const scenario::Document& nominal,
                  const app::TuneSettings& s, const app::TuneResult& r,
                  const std::filesystem::path& tune_path) {

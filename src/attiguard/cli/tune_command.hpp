@@ -27,7 +27,7 @@ struct TuneArguments {
 };
 
 /// Searches the gains on this process's threads, or over the MPI ranks it was started among
-/// (every rank calls it; rank 0 alone prints and writes); writes DIR/tune.json, DIR/best.toml
+/// (every rank calls it; rank 0 alone prints and writes); writes DIR/tune.json, DIR/best (the best scenario)
 /// and DIR/tune_tradeoff.png. Throws VerificationFailure (exit 4, on every rank) when no
 /// evaluated point converged with every constraint kept.
 void tune_command(const TuneArguments& args);

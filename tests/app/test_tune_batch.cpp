@@ -99,5 +99,20 @@ TEST(TuneBatch, AnEvaluationThatThrowsIsRaisedAfterTheBatch) {
   }
 }
 
+// The set-up step of the command: its error family and message come through (one rank here; two
+// ranks, with a failure on rank 0 alone: tests/cli/tune_mpi_equal.cmake).
+TEST(TuneBatch, RunOnEveryRankRaisesTheStepsError) {
+  int calls = 0;
+  run_on_every_rank([&] { ++calls; }, {});
+  EXPECT_EQ(calls, 1);
+  EXPECT_THROW(run_on_every_rank([] { throw VerificationFailure("x"); }, {}), VerificationFailure);
+  try {
+    run_on_every_rank([] { throw InputError("dir: cannot create output directory"); }, {});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "dir: cannot create output directory");
+  }
+}
+
 }  // namespace
 }  // namespace attiguard::app

@@ -2,7 +2,7 @@
 # threads per rank) must find the same `best` and evaluate the same `points` (tune.json beyond
 # its rank/thread counts and wall time) and write the same best.toml; a search without a
 # converged point exits 4 and a bad [tune] table exits 2 under MPI too, on every rank, without
-# hanging (docs/pet-erg.md, section 15). Variables: CLI, MPIEXEC, SOURCE_DIR, WORK_DIR.
+# hanging, and so does a failure of rank 0 alone (docs/pet-erg.md, section 15). Variables: CLI, MPIEXEC, SOURCE_DIR, WORK_DIR.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
@@ -57,6 +57,10 @@ string(JSON outcome GET "${none}" outcome)
 if(NOT outcome STREQUAL "none_converged")
   message(FATAL_ERROR "none/tune.json: outcome ${outcome}, expected none_converged")
 endif()
+# A failure on rank 0 alone (it alone makes DIR; here DIR is a file): exit 2, the other rank
+# does not wait for it in the search's first exchange.
+file(WRITE ${WORK_DIR}/a_file "")
+run_expect(2 ${mpi} ${CLI} tune ${scenario} ${common} --out ${WORK_DIR}/a_file)
 # A bad [tune] table: exit 2 under MPI.
 run_expect(2 ${mpi} ${CLI} tune ${SOURCE_DIR}/tests/data/bad_inputs/tune_range_reversed.toml
            --no-plot --out ${WORK_DIR}/bad)

@@ -25,6 +25,17 @@ std::optional<double> read_optional(const nlohmann::json& j) {
   return j.get<double>();
 }
 
+/// "<exit code> <message>" of the exception being handled (3 for one outside attiguard's family).
+std::string current_failure() {
+  try {
+    throw;
+  } catch (const Error& e) {
+    return std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
+  } catch (const std::exception& e) {
+    return std::to_string(static_cast<int>(ExitCode::numerical_failure)) + ' ' + e.what();
+  }
+}
+
 /// Raises the error "<exit code> <message>" with its family (InputError, VerificationFailure,
 /// NumericalError for any other code).
 [[noreturn]] void raise_failure(const std::string& failure) {
@@ -37,6 +48,22 @@ std::optional<double> read_optional(const nlohmann::json& j) {
 }
 
 }  // namespace
+
+void run_on_every_rank(const std::function<void()>& step, const parallel::World& world) {
+  if (world.size == 1) {
+    step();
+    return;
+  }
+  std::string mine;
+  try {
+    step();
+  } catch (const std::exception&) {
+    mine = current_failure();
+  }
+  for (const std::string& failure : parallel::allgather_bytes(mine, world)) {
+    if (!failure.empty()) raise_failure(failure);
+  }
+}
 
 std::string encode_tune_share(const TuneBatchShare& share) {
   nlohmann::json entries = nlohmann::json::array();
@@ -94,10 +121,8 @@ std::vector<TunePoint> evaluate_tune_batch(const scenario::Document& nominal,
       const auto& values = candidates[static_cast<std::size_t>(mine.positions[k])];
       try {
         mine.points[k] = evaluate_candidate(nominal, parameters, values, dir);
-      } catch (const Error& e) {
-        mine.failures[k] = std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
-      } catch (const std::exception& e) {
-        mine.failures[k] = std::to_string(static_cast<int>(ExitCode::numerical_failure)) + ' ' + e.what();
+      } catch (const std::exception&) {
+        mine.failures[k] = current_failure();
       }
     }
   };

@@ -7,6 +7,7 @@
 /// decision of the search. No MPI header here: the exchange is parallel/mpi_world's.
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,12 @@ namespace attiguard::app {
     const scenario::Document& nominal, const std::vector<TuneParameter>& parameters,
     const std::vector<std::vector<double>>& candidates, int threads,
     const std::filesystem::path& scratch, const parallel::World& world);
+
+/// Runs `step` on this rank, then exchanges whether it threw: when it threw on any rank, every
+/// rank raises the error of the lowest such rank (its exit code and message), so that a failure
+/// on one rank only (rank 0's output directory, say) does not leave the others waiting in the
+/// search's first exchange. Collective over `world`; one rank: runs `step`.
+void run_on_every_rank(const std::function<void()>& step, const parallel::World& world);
 
 /// Points of one rank on their way to the others: candidate position, the evaluation's error
 /// ("" or "<exit code> <message>") and the point (when there was no error).

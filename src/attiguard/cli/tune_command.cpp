@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "attiguard/app/tune_batch.hpp"
 #include "attiguard/app/tune_search.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
@@ -80,14 +81,19 @@ void report_best(const TuneArguments& args, const scenario::Document& nominal,
 
 void tune_command(const TuneArguments& args) {
   const parallel::World world = parallel::mpi_world();
-  const scenario::Document loaded = scenario::load_document(args.scenario);
-  const scenario::TuneTable table = scenario::read_tune_table(loaded);
-  // A campaign scenario is tuned at its nominal values.
-  const scenario::Document nominal =
-      loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
-  app::TuneSettings s = tune_settings(args, table, nominal);
+  scenario::TuneTable table;
+  scenario::Document nominal;
+  app::TuneSettings s;
+  // The set-up fails on every rank or on none (rank 0 alone makes DIR: the others write nothing).
+  app::run_on_every_rank([&] {
+    const scenario::Document loaded = scenario::load_document(args.scenario);
+    table = scenario::read_tune_table(loaded);
+    // A campaign scenario is tuned at its nominal values.
+    nominal = loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
+    s = tune_settings(args, table, nominal);
+    if (world.root()) make_dir(args.out_dir);
+  }, world);
   s.world = world;
-  make_dir(args.out_dir);
   s.scratch = args.out_dir / ".scratch";
   if (world.root()) {
     std::cout << "Tuning " << args.scenario.string() << ": " << s.budget << " runs on "

@@ -62,6 +62,9 @@ TEST(TuneCli, BadRangeBudgetOrKindIsInvalidInput) {
   EXPECT_NE(range.err.find("--range 'control.kp=3:2'"), std::string::npos) << range.err;
   EXPECT_EQ(test::run_cli("tune examples/pet_erg_slew170.toml --budget 2" + out).exit_code, 2);
   EXPECT_EQ(test::run_cli("tune examples/pet_erg_slew170.toml --threads 0" + out).exit_code, 2);
+  const auto batch = test::run_cli("tune examples/pet_erg_slew170.toml --batch 0" + out);
+  EXPECT_EQ(batch.exit_code, 2);
+  EXPECT_NE(batch.err.find("--batch: must be at least 1"), std::string::npos) << batch.err;
   const auto kind = test::run_cli("tune examples/rigid_body_pd.toml" + out);
   EXPECT_EQ(kind.exit_code, 2);
   EXPECT_NE(kind.err.find("pet_erg"), std::string::npos) << kind.err;

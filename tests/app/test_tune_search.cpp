@@ -74,6 +74,10 @@ TEST(TuneSearch, DeterministicForASeedWhateverTheThreadCount) {
   const nlohmann::json one = tune_json(settings(p, 12, 1, "det1"), tune_search(doc, settings(p, 12, 1, "det1")));
   const nlohmann::json two = tune_json(settings(p, 12, 2, "det2"), tune_search(doc, settings(p, 12, 2, "det2")));
   EXPECT_EQ(one.dump(), two.dump());
+  // More workers than the batch of 4 (the batch is not tied to them; under MPI the workers are
+  // ranks x threads: tests/cli/tune_mpi_equal.cmake).
+  const nlohmann::json five = tune_json(settings(p, 12, 5, "det5"), tune_search(doc, settings(p, 12, 5, "det5")));
+  EXPECT_EQ(one.dump(), five.dump());
   TuneSettings other = settings(p, 12, 1, "det3");
   other.seed = 8;
   EXPECT_NE(tune_json(other, tune_search(doc, other))["points"].dump(), one["points"].dump());

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -61,9 +62,65 @@ TEST(TuneCli, BadRangeBudgetOrKindIsInvalidInput) {
   EXPECT_NE(range.err.find("--range 'control.kp=3:2'"), std::string::npos) << range.err;
   EXPECT_EQ(test::run_cli("tune examples/pet_erg_slew170.toml --budget 2" + out).exit_code, 2);
   EXPECT_EQ(test::run_cli("tune examples/pet_erg_slew170.toml --threads 0" + out).exit_code, 2);
+  const auto batch = test::run_cli("tune examples/pet_erg_slew170.toml --batch 0" + out);
+  EXPECT_EQ(batch.exit_code, 2);
+  EXPECT_NE(batch.err.find("--batch: must be at least 1"), std::string::npos) << batch.err;
   const auto kind = test::run_cli("tune examples/rigid_body_pd.toml" + out);
   EXPECT_EQ(kind.exit_code, 2);
   EXPECT_NE(kind.err.find("pet_erg"), std::string::npos) << kind.err;
+  fs::remove_all(dir);
+}
+
+
+/// examples/pet_erg_slew170.toml with `tune` appended, written into `dir`.
+fs::path slew_with(const fs::path& dir, const std::string& tune) {
+  const fs::path path = dir / "slew.toml";
+  std::ofstream(path) << test::read_file(fs::path(ATTIGUARD_SOURCE_DIR) / "examples/pet_erg_slew170.toml") << '\n'
+                      << tune;
+  return path;
+}
+
+// The [tune] table gives budget, seed, ranges and plot; flags given override its keys.
+TEST(TuneCli, TuneTableGivesTheSettingsAndFlagsOverrideThem) {
+  const fs::path dir = test::fresh_dir("tune_table");
+  const fs::path file = slew_with(dir, "[tune]\nbudget = 6\nseed = 3\nbatch = 2\nplot = false\n[tune.ranges]\n"
+                                       "\"control.kp\" = [1.0, 5.0]\n\"control.kd\" = [5.0, 20.0]\n");
+  const auto r = test::run_cli("tune '" + file.string() + "' --out '" + (dir / "table").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = read_json(dir / "table" / "tune.json");
+  EXPECT_EQ(j["evaluated"], 6);
+  EXPECT_EQ(j["seed"], 3);
+  EXPECT_EQ(j["batch"], 2);
+  ASSERT_EQ(j["parameters"].size(), 2u);
+  EXPECT_EQ(j["parameters"][0]["key"], "control.kd");  // in key order
+  EXPECT_EQ(j["parameters"][0]["max"], 20.0);
+  EXPECT_EQ(j["parameters"][1]["key"], "control.kp");
+  EXPECT_EQ(j["parameters"][1]["min"], 1.0);
+  EXPECT_FALSE(fs::exists(dir / "table" / "tune_tradeoff.png"));  // plot = false
+  const auto o = test::run_cli("tune '" + file.string() + "' --budget 8 --seed 4 --batch 3 --range erg.kappa=1:10 --no-plot --out '" +
+                               (dir / "flags").string() + "'");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const nlohmann::json k = read_json(dir / "flags" / "tune.json");
+  EXPECT_EQ(k["evaluated"], 8);
+  EXPECT_EQ(k["seed"], 4);
+  EXPECT_EQ(k["batch"], 3);
+  ASSERT_EQ(k["parameters"].size(), 1u);
+  EXPECT_EQ(k["parameters"][0]["key"], "erg.kappa");
+  // best.toml keeps the [tune] table: `attiguard run` and `check` ignore it.
+  EXPECT_EQ(test::run_cli("check '" + (dir / "flags" / "best.toml").string() + "'").exit_code, 0);
+  fs::remove_all(dir);
+}
+
+TEST(TuneCli, BadTuneTableIsInvalidInputNamingTheKey) {
+  const fs::path dir = test::fresh_dir("tune_table_bad");
+  const fs::path file = slew_with(dir, "[tune]\nbudget = 2\n");
+  const auto r = test::run_cli("tune '" + file.string() + "' --no-plot --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("slew.toml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": tune.budget: must be in [4, "), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  // `attiguard check` ignores the table (it is tune's).
+  EXPECT_EQ(test::run_cli("check '" + file.string() + "'").exit_code, 0);
   fs::remove_all(dir);
 }
 

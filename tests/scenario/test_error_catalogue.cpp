@@ -13,6 +13,7 @@
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/tune_table.hpp"
 #include "attiguard/app/kinds.hpp"
 
 namespace attiguard::scenario {
@@ -52,6 +53,7 @@ std::string error_of(const std::string& relative) {
   const std::string text = slurp(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / relative);
   try {
     const Document doc = parse_document(text, relative);
+    if (doc.has_top_level("tune")) (void)read_tune_table(doc);  // as attiguard tune (cli/tune_command.cpp)
     if (doc.has_top_level("dispersions")) {  // as attiguard campaign (app/campaign_runner.cpp)
       const Document nominal = nominal_document(doc);
       const app::KindHandler& h = app::handler_for(nominal);

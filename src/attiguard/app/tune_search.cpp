@@ -3,12 +3,11 @@
 #include "attiguard/app/tune_search.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <charconv>
-#include <thread>
 
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/app/tune_batch.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document_edit.hpp"
@@ -29,30 +28,6 @@ std::optional<double> number_field(const nlohmann::json& summary, const char* ke
   const auto it = summary.find(key);
   if (it == summary.end() || !it->is_number()) return std::nullopt;
   return it->get<double>();
-}
-
-/// Evaluates `candidates` on `threads` workers; result i belongs to candidate i.
-std::vector<TunePoint> evaluate_batch(const scenario::Document& nominal,
-                                      const std::vector<TuneParameter>& parameters,
-                                      const std::vector<std::vector<double>>& candidates,
-                                      int threads, const std::filesystem::path& scratch) {
-  std::vector<TunePoint> out(candidates.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&](int worker) {
-    const std::filesystem::path dir = scratch / ("worker" + std::to_string(worker));
-    for (std::size_t i = next++; i < candidates.size(); i = next++) {
-      out[i] = evaluate_candidate(nominal, parameters, candidates[i], dir);
-    }
-  };
-  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(candidates.size())));
-  if (workers == 1) {
-    work(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (int w = 0; w < workers; ++w) pool.emplace_back(work, w);
-    for (auto& t : pool) t.join();
-  }
-  return out;
 }
 
 /// Latin hypercube of n points in the log box: one point per stratum of each axis, strata
@@ -203,6 +178,7 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
   if (s.parameters.empty()) throw InputError("attiguard tune: no parameter to search");
   if (s.budget < 4) throw InputError("--budget: must be at least 4 runs");
   if (s.threads < 1) throw InputError("--threads: must be at least 1");
+  if (s.batch < 1) throw InputError("--batch: must be at least 1");
   for (const TuneParameter& p : s.parameters) {
     if (!(p.min > 0.0) || !(p.min <= p.max) || !std::isfinite(p.max)) {
       throw InputError("attiguard tune: " + p.key + ": range must satisfy 0 < min <= max");
@@ -217,6 +193,13 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     for (const TuneParameter& p : s.parameters) lows.push_back(p.min);
     (void)tune_candidate(nominal, s.parameters, lows);
   }
+  // Every rank runs this same search on the same points (tune_batch.hpp): the same draws from
+  // the same stream, the same decisions; only the evaluation of a batch is split.
+  const std::filesystem::path scratch = s.scratch / ("rank" + std::to_string(s.world.rank));
+  const auto evaluate = [&](const std::vector<TuneParameter>& parameters,
+                            const std::vector<std::vector<double>>& candidates) {
+    return evaluate_tune_batch(nominal, parameters, candidates, s.threads, scratch, s.world);
+  };
   TuneResult r;
   campaign::Rng rng(campaign::run_seed(s.seed, 0));
   const auto append = [&](std::vector<TunePoint> batch, const char* phase) {
@@ -234,7 +217,7 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
   };
   // The scenario as given (its own gains), for comparison; not a search point.
   {
-    std::vector<TunePoint> own = evaluate_batch(nominal, {}, {std::vector<double>{}}, 1, s.scratch);
+    std::vector<TunePoint> own = evaluate({}, {std::vector<double>{}});
     r.nominal = std::move(own.front());
     r.nominal.phase = "nominal";
     for (const TuneParameter& p : s.parameters) {
@@ -242,11 +225,9 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     }
   }
   const long samples = std::max(1L, s.budget / 2);
-  append(evaluate_batch(nominal, s.parameters, latin_hypercube(s.parameters, samples, rng),
-                        s.threads, s.scratch),
-         "sample");
+  append(evaluate(s.parameters, latin_hypercube(s.parameters, samples, rng)), "sample");
   double radius = 0.25;
-  const long batch_size = std::max<long>(4, s.threads);
+  const long batch_size = s.batch;  // not the worker count: the same points whatever N and T
   while (static_cast<long>(r.points.size()) < s.budget) {
     const long n = std::min(batch_size, s.budget - static_cast<long>(r.points.size()));
     std::vector<std::vector<double>> batch;
@@ -255,7 +236,7 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     } else {
       batch = latin_hypercube(s.parameters, n, rng);  // nothing admissible yet: keep exploring
     }
-    const bool improved = append(evaluate_batch(nominal, s.parameters, batch, s.threads, s.scratch),
+    const bool improved = append(evaluate(s.parameters, batch),
                                  r.best ? "refine" : "sample");
     // Shrink the neighbourhood after a batch without progress; once it is tiny, restart it
     // wide around the best (escapes a narrow valley without losing the best point).
@@ -276,8 +257,9 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
   j["parameters"] = space;
   j["budget"] = s.budget;
   j["seed"] = s.seed;
+  j["batch"] = s.batch;
   j["search"] = "Latin hypercube (log-uniform) of budget/2 points, then "
-                "batches perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
+                "batches of `batch` points perturbed around the fastest admissible point (radius 0.25 of each log range, x0.7 after a batch without progress, back to 0.25 below 0.01)";
   long admissible = 0;
   for (const TunePoint& p : r.points) admissible += p.admissible() ? 1 : 0;
   j["evaluated"] = r.points.size();

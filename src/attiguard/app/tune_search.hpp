@@ -3,7 +3,8 @@
 /// Gain search of a pet_erg scenario (docs/pet-erg.md, section "Tuning"): log-uniform Latin
 /// hypercube sampling of the tuned keys, then local refinement around the fastest admissible
 /// point; every candidate is checked by the kind's parser (Γ_d admissibility) and run in memory
-/// on worker threads. Deterministic for a given seed whatever the thread count.
+/// on the MPI ranks and their worker threads (tune_batch.hpp). Deterministic for a given seed
+/// whatever the rank and thread counts.
 
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/scenario/document.hpp"
 
 namespace attiguard::app {
@@ -29,8 +31,12 @@ struct TuneSettings {
   std::vector<TuneParameter> parameters;
   long budget{64};          ///< runs in all (half sampling, half refinement)
   std::uint64_t seed{1};
-  int threads{1};
+  int threads{1};                 ///< worker threads of each rank
+  /// Points per refinement batch (docs/pet-erg.md, section 15); not tied to the worker count,
+  /// so that the points do not depend on it.
+  long batch{4};
   std::filesystem::path scratch;  ///< working directory of the runs (nothing is written)
+  parallel::World world{};        ///< the ranks that share each batch ({0, 1}: this process)
 };
 
 /// One evaluated candidate.
@@ -79,7 +85,8 @@ struct TuneResult {
                                            const std::vector<double>& values,
                                            const std::filesystem::path& scratch);
 
-/// Runs the search (docs/pet-erg.md, "Tuning"). Throws InputError for a bad space or budget.
+/// Runs the search (docs/pet-erg.md, "Tuning"). Collective over settings.world: every rank
+/// calls it and gets the whole result. Throws InputError for a bad space or budget.
 [[nodiscard]] TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& settings);
 
 /// DIR/tune.json: settings, best gains, convergence time and ratio, every point.

@@ -222,15 +222,23 @@ int run(int argc, char** argv) {
   tune_cmd->add_option("--out", tune_args.out_dir, "Output directory (created if missing)")
       ->required()
       ->type_name("DIR");
-  tune_cmd->add_option("--threads", tune_args.threads, "Worker threads")->type_name("T");
-  tune_cmd->add_option("--budget", tune_args.budget, "Runs in all (default 64)")->type_name("RUNS");
+  tune_cmd->add_option("--threads", tune_args.threads, "Worker threads per process")->type_name("T");
+  long tune_budget = 64;  // flags given override the scenario's [tune] table (tune_command.hpp)
+  tune_cmd->add_option("--budget", tune_budget, "Runs in all (default: [tune] budget, else 64)")->type_name("RUNS");
+  long tune_batch = 4;
+  tune_cmd->add_option("--batch", tune_batch,
+                       "Points per refinement batch (default: [tune] batch, else 4); the search "
+                       "depends on it, not on the ranks and threads")
+      ->type_name("B");
   std::string tune_seed_text = "1";
-  tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default 1)")->type_name("S");
+  tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default: [tune] seed, else 1)")
+      ->type_name("S");
   tune_cmd->add_option("--range", tune_args.ranges,
-                       "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces the default "
-                       "control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
+                       "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces [tune.ranges] and the "
+                       "default control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
       ->type_name("KEY=MIN:MAX");
-  tune_cmd->add_flag("!--no-plot", tune_args.plot, "Do not write DIR/tune_tradeoff.png");
+  bool tune_no_plot = false;
+  tune_cmd->add_flag("--no-plot", tune_no_plot, "Do not write DIR/tune_tradeoff.png (also [tune] plot = false)");
 
   std::filesystem::path view_dir;  // browser viewer: cli/view_command.cpp
   CLI::App* view_cmd = app.add_subcommand(
@@ -262,7 +270,12 @@ int run(int argc, char** argv) {
     return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   }
   if (campaign_cmd->parsed()) campaign_args.seed = parse_seed(seed_text);
-  if (tune_cmd->parsed()) tune_args.seed = parse_seed(tune_seed_text);
+  if (tune_cmd->parsed()) {
+    if (tune_cmd->count("--seed") > 0) tune_args.seed = parse_seed(tune_seed_text);
+    if (tune_cmd->count("--budget") > 0) tune_args.budget = tune_budget;
+    if (tune_cmd->count("--batch") > 0) tune_args.batch = tune_batch;
+    if (tune_no_plot) tune_args.plot = false;
+  }
   attiguard::scenario::set_work_limits(limits);
 
   if (run_cmd->parsed()) {

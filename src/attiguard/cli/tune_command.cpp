@@ -1,17 +1,21 @@
 /// @file tune_command.cpp
-/// `attiguard tune`: the fastest guaranteed manoeuvre of a pet_erg scenario over its gains
-/// (docs/pet-erg.md, section "Tuning").
+/// `attiguard tune`: the fastest guaranteed manoeuvre of a pet_erg scenario over its gains, on
+/// threads and MPI ranks (docs/pet-erg.md, section "Tuning").
 
 #include "attiguard/cli/tune_command.hpp"
 
+#include <chrono>
 #include <fstream>
 #include <iostream>
 
+#include "attiguard/app/tune_batch.hpp"
 #include "attiguard/app/tune_search.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document_edit.hpp"
+#include "attiguard/scenario/tune_table.hpp"
 
 namespace attiguard::cli {
 
@@ -25,40 +29,26 @@ void make_dir(const std::filesystem::path& dir) {
   }
 }
 
-}  // namespace
-
-void tune_command(const TuneArguments& args) {
-  const scenario::Document loaded = scenario::load_document(args.scenario);
-  // A campaign scenario is tuned at its nominal values.
-  const scenario::Document nominal =
-      loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
+/// The search settings: each flag given, else its `[tune]` key, else the default.
+app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneTable& table,
+                                const scenario::Document& nominal) {
   app::TuneSettings s;
   for (const std::string& r : args.ranges) s.parameters.push_back(app::parse_tune_range(r));
+  if (s.parameters.empty()) {
+    for (const scenario::TuneRange& r : table.ranges) s.parameters.push_back({r.key, r.min, r.max});
+  }
   if (s.parameters.empty()) s.parameters = app::default_tune_parameters(nominal);
-  s.budget = args.budget;
-  s.seed = args.seed;
+  s.budget = args.budget.value_or(table.budget.value_or(64));
+  s.seed = args.seed.value_or(table.seed.value_or(1));
+  s.batch = args.batch.value_or(table.batch.value_or(4));
   s.threads = args.threads;
-  make_dir(args.out_dir);
-  s.scratch = args.out_dir / ".scratch";
-  std::cout << "Tuning " << args.scenario.string() << ": " << s.budget << " runs on "
-            << s.threads << " thread(s), seed " << s.seed << '\n';
-  for (const auto& p : s.parameters) {
-    std::cout << "  " << p.key << " in [" << p.min << ", " << p.max << "] (log-uniform)\n";
-  }
-  const app::TuneResult r = app::tune_search(nominal, s);
-  std::error_code ec;
-  std::filesystem::remove_all(s.scratch, ec);
-  const nlohmann::json j = app::tune_json(s, r);
-  const auto tune_path = args.out_dir / "tune.json";
-  std::ofstream(tune_path, std::ios::binary | std::ios::trunc) << j.dump(2) << '\n';
-  std::cout << "Evaluated " << j["evaluated"] << " points: " << j["admissible"]
-            << " converged with every constraint kept\n";
-  if (!r.best) {
-    std::cout << "Wrote:\n  " << tune_path.string() << '\n';
-    throw VerificationFailure(args.scenario.string() + ": attiguard tune: " +
-                              j["outcome_reason"].get<std::string>() + " (see " +
-                              tune_path.string() + ")");
-  }
+  return s;
+}
+
+/// Prints the best point and the scenario's own result, and writes the best scenario (DIR/best).
+void report_best(const TuneArguments& args, const scenario::Document& nominal,
+                 const app::TuneSettings& s, const app::TuneResult& r,
+                 const std::filesystem::path& tune_path) {
   const app::TunePoint& b = r.points[*r.best];
   std::cout << "best:";
   for (std::size_t d = 0; d < s.parameters.size(); ++d) {
@@ -85,7 +75,59 @@ void tune_command(const TuneArguments& args) {
         << scenario::document_text(best);
   }
   std::cout << "Wrote:\n  " << tune_path.string() << "\n  " << best_path.string() << '\n';
-  if (args.plot) {
+}
+
+}  // namespace
+
+void tune_command(const TuneArguments& args) {
+  const parallel::World world = parallel::mpi_world();
+  scenario::TuneTable table;
+  scenario::Document nominal;
+  app::TuneSettings s;
+  // The set-up fails on every rank or on none (rank 0 alone makes DIR: the others write nothing).
+  app::run_on_every_rank([&] {
+    const scenario::Document loaded = scenario::load_document(args.scenario);
+    table = scenario::read_tune_table(loaded);
+    // A campaign scenario is tuned at its nominal values.
+    nominal = loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
+    s = tune_settings(args, table, nominal);
+    if (world.root()) make_dir(args.out_dir);
+  }, world);
+  s.world = world;
+  s.scratch = args.out_dir / ".scratch";
+  if (world.root()) {
+    std::cout << "Tuning " << args.scenario.string() << ": " << s.budget << " runs on "
+              << world.size << " rank(s) x " << s.threads << " thread(s), seed " << s.seed << '\n';
+    for (const auto& p : s.parameters) {
+      std::cout << "  " << p.key << " in [" << p.min << ", " << p.max << "] (log-uniform)\n";
+    }
+    std::cout << std::flush;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const app::TuneResult r = app::tune_search(nominal, s);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::error_code ec;
+  std::filesystem::remove_all(s.scratch / ("rank" + std::to_string(world.rank)), ec);
+  nlohmann::json j = app::tune_json(s, r);
+  const auto tune_path = args.out_dir / "tune.json";
+  if (world.root()) {
+    std::filesystem::remove(s.scratch, ec);  // empty unless another rank is still removing its own
+    j["ranks"] = world.size;
+    j["threads"] = s.threads;
+    j["wall_time_s"] = wall;
+    std::ofstream(tune_path, std::ios::binary | std::ios::trunc) << j.dump(2) << '\n';
+    std::cout << "Evaluated " << j["evaluated"] << " points in " << wall << " s: " << j["admissible"]
+              << " converged with every constraint kept\n";
+  }
+  if (!r.best) {
+    if (world.root()) std::cout << "Wrote:\n  " << tune_path.string() << '\n' << std::flush;
+    throw VerificationFailure(args.scenario.string() + ": attiguard tune: " +
+                              j["outcome_reason"].get<std::string>() + " (see " +
+                              tune_path.string() + ")");
+  }
+  if (!world.root()) return;
+  report_best(args, nominal, s, r, tune_path);
+  if (args.plot.value_or(table.plot.value_or(true))) {
     const PlotOutcome p = plot_results("tune", args.out_dir);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
     if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';

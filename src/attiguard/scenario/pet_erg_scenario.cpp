@@ -220,7 +220,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   sim::PetErgScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation", "imperfections", "wheels"});
+                 "control", "erg", "cones", "simulation", "imperfections", "wheels", "tune"});
   sc.name = read_header(root, doc, "pet_erg");
   check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
   const TableReader control =

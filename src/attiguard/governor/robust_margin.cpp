@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/core/errors.hpp"
@@ -28,15 +30,22 @@ void require(bool ok, const std::string& what) {
 bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 bool non_negative_finite(double x) noexcept { return std::isfinite(x) && x >= 0.0; }
 
-/// Cells of the angle sweep of ultimate_level_bound.
+/// Cells of the angle sweep of ultimate_level_bound, and its rounds of refinement.
 constexpr int kAngleCells = 4096;
+constexpr int kRefinementRounds = 12;
+/// Cells of the coarse sweep that ranks the candidate values of ε (any ε is sound; the chosen
+/// one's Γ_min is then computed by ultimate_level_bound).
+constexpr int kSearchCells = 256;
 /// Candidate values of ε tried between ε_max·1e-6 and ε_max.
 constexpr int kEpsilonCandidates = 120;
 
 }  // namespace
 
-double ultimate_level_bound(double a, double b, double c, double epsilon, double u_yy, double u_xx,
-                            double u_xy) noexcept {
+namespace {
+
+/// ultimate_level_bound over `cells` initial cells and at most `rounds` rounds of refinement.
+double level_bound(double a, double b, double c, double epsilon, double u_yy, double u_xx, double u_xy,
+                   int cells, int rounds) {
   // Q(x, y) = a y² + b x² − c x y = uᵀ M u with M = [[b, −c/2], [−c/2, a]] (u = (x, y)).
   const double mean = 0.5 * (a + b);
   const double radius = std::hypot(0.5 * (a - b), 0.5 * c);
@@ -45,13 +54,17 @@ double ultimate_level_bound(double a, double b, double c, double epsilon, double
     return std::numeric_limits<double>::infinity();
   }
   // Along the ray r·(cos t, sin t), Q ≤ (y + εx) holds for r ≤ B(t)/Q(t), where U = r² U(t):
-  // sup = max_t U(t) B(t)² / Q(t)². Each cell [t0, t1] is bounded by interval evaluation
-  // (every term is monotone in cos t, sin t ≥ 0).
-  double sup = 0.0;
-  const double dt = 0.5 * std::numbers::pi / kAngleCells;
-  for (int i = 0; i < kAngleCells; ++i) {
-    const double t0 = i * dt;
-    const double t1 = (i + 1 == kAngleCells) ? 0.5 * std::numbers::pi : (i + 1) * dt;
+  // sup = max_t U(t) B(t)² / Q(t)². A cell [t0, t1] is bounded by interval evaluation (every
+  // term is monotone in cos t, sin t ≥ 0); cells whose bound exceeds the best point value by more
+  // than 1e-6 (relative) are split (branch and bound, at most kMaxRounds rounds).
+  const auto value = [&](double t) {
+    const double x = std::cos(t);
+    const double y = std::sin(t);
+    const double q = a * y * y + b * x * x - c * x * y;
+    const double r = (y + epsilon * x) / q;
+    return r * r * (u_yy * y * y + u_xx * x * x + u_xy * x * y);
+  };
+  const auto cell_bound = [&](double t0, double t1) {
     const double C0 = std::min(1.0, std::cos(t0));
     const double C1 = std::max(0.0, std::cos(t1));
     const double S0 = std::max(0.0, std::sin(t0));
@@ -59,9 +72,48 @@ double ultimate_level_bound(double a, double b, double c, double epsilon, double
     const double U_hi = u_yy * S1 * S1 + u_xx * C0 * C0 + u_xy * C0 * S1;
     const double B_hi = S1 + epsilon * C0;
     const double Q_lo = std::max(a * S0 * S0 + b * C1 * C1 - c * C0 * S1, q_min);
-    sup = std::max(sup, U_hi * B_hi * B_hi / (Q_lo * Q_lo));
+    return U_hi * B_hi * B_hi / (Q_lo * Q_lo);
+  };
+  struct Cell {
+    double t0, t1, bound;
+  };
+  std::vector<Cell> open;
+  open.reserve(static_cast<std::size_t>(cells));
+  double lower = 0.0;
+  const double dt = 0.5 * std::numbers::pi / cells;
+  for (int i = 0; i < cells; ++i) {
+    const double t0 = i * dt;
+    const double t1 = (i + 1 == cells) ? 0.5 * std::numbers::pi : (i + 1) * dt;
+    open.push_back({t0, t1, cell_bound(t0, t1)});
+    lower = std::max(lower, value(0.5 * (t0 + t1)));
+  }
+  constexpr int kSplit = 8;
+  for (int round = 0; round < rounds && !open.empty(); ++round) {
+    std::vector<Cell> next;
+    for (const Cell& cell : open) {
+      if (!(cell.bound > lower * (1.0 + 1e-6))) continue;
+      const double w = (cell.t1 - cell.t0) / kSplit;
+      for (int j = 0; j < kSplit; ++j) {
+        const double t0 = cell.t0 + j * w;
+        const double t1 = j + 1 == kSplit ? cell.t1 : t0 + w;
+        next.push_back({t0, t1, cell_bound(t0, t1)});
+        lower = std::max(lower, value(0.5 * (t0 + t1)));
+      }
+    }
+    open = std::move(next);
+  }
+  double sup = lower * (1.0 + 1e-6);
+  for (const Cell& cell : open) {
+    if (cell.bound > lower * (1.0 + 1e-6)) sup = std::max(sup, cell.bound);
   }
   return sup * (1.0 + 1e-9);  // rounding allowance of the ~20 operations per cell
+}
+
+}  // namespace
+
+double ultimate_level_bound(double a, double b, double c, double epsilon, double u_yy, double u_xx,
+                            double u_xy) {
+  return level_bound(a, b, c, epsilon, u_yy, u_xx, u_xy, kAngleCells, kRefinementRounds);
 }
 
 double strict_lyapunov(const lie::Mat3& J, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
@@ -144,7 +196,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     const double a = kd - eps * lmax;
     const double b = eps * kp;
     const double c = eps * C + bias_coupling;
-    const double unit = ultimate_level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - phi_top), eps * lmax);
+    const double unit = level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - phi_top), eps * lmax, kSearchCells, 0);
     if (!std::isfinite(unit) || !(delta < 1.0)) continue;
     const double gamma_min = wbar * wbar * unit;
     const double score = gamma_min / (1.0 - delta);
@@ -157,6 +209,10 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
       m.c = c;
       m.gamma_min = gamma_min;
     }
+  }
+  if (m.epsilon > 0.0) {
+    m.gamma_min = wbar * wbar * ultimate_level_bound(m.a, m.b, m.c, m.epsilon, 0.5 * lmax, kp / (2.0 - phi_top),
+                                                     m.epsilon * lmax);
   }
   require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + g(kp) +
                                ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax));

@@ -74,11 +74,12 @@ struct RobustMargin {
 [[nodiscard]] RobustMargin compute_robust_margin(const RobustMarginInputs& in);
 
 /// sup{U(x, y) : x, y ≥ 0, a y² + b x² − c x y ≤ y + ε x} with U = u_yy y² + u_xx x² + u_xy x y,
-/// all coefficients ≥ 0, 4ab > c²: an upper bound (interval evaluation over 4096 angle cells,
-/// rounding allowance 1e-9 relative), the Γ_min of docs/pet-erg.md section 13 for w̄ = 1.
-/// Returns +∞ when 4ab ≤ c² (the region is unbounded).
+/// all coefficients ≥ 0, 4ab > c²: an upper bound within 1e-6 (relative) of the supremum
+/// (interval evaluation over angle cells, branch and bound, rounding allowance 1e-9 relative),
+/// the Γ_min of docs/pet-erg.md section 13 for w̄ = 1. Returns +∞ when 4ab ≤ c² (the region is
+/// unbounded). Set-up code (allocates).
 [[nodiscard]] double ultimate_level_bound(double a, double b, double c, double epsilon,
-                                          double u_yy, double u_xx, double u_xy) noexcept;
+                                          double u_yy, double u_xx, double u_xy);
 
 /// W = V − ε ωᵀJ sk(RᵀR_g)^∨, the strict Lyapunov function of docs/pet-erg.md section 13
 /// (V of the PET-ERG paper, Sec. III-A). Allocation-free.

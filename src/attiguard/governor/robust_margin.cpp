@@ -215,7 +215,11 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
                                                      m.epsilon * lmax);
   }
   require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + g(kp) +
-                               ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax));
+                               ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax) +
+                               (bias_coupling > 0.0 ? " with the attitude bias coupling kp 2 sin(beta/2) = " +
+                                                          g(bias_coupling) + " N m (beta = " + g(in.attitude_bias) +
+                                                          " rad): reduce the bias bound or raise kd"
+                                                    : ": raise kd"));
   const double sr = in.attitude_noise;
   const double sw = in.rate_error;
   m.measurement_margin = lmax * (m.omega_max * sw + 0.5 * sw * sw) +

@@ -70,6 +70,28 @@ TEST(CampaignCli, CountsEachOutcomeAndStatesTheCountOfTheConvergenceStatistics) 
   std::filesystem::remove_all(dir);
 }
 
+// Issue 14: the flight-like campaign with robust margins keeps every constraint where the same
+// campaign with the nominal margins violates the pointing constraints (docs/pet-erg.md,
+// section 14; the 10⁴-run figures are quoted there).
+TEST(CampaignCli, RobustMarginsKeepTheConstraintsThatTheNominalOnesViolate) {
+  const auto dir = fresh_dir("campaign_robust");
+  const auto robust = campaign("examples/pet_erg_robust_campaign.toml", dir / "robust", "--runs 100 --threads 2");
+  ASSERT_EQ(robust.exit_code, 0) << robust.err;
+  const auto nominal =
+      campaign("examples/pet_erg_robust_campaign_nominal.toml", dir / "nominal", "--runs 100 --threads 2");
+  ASSERT_EQ(nominal.exit_code, 0) << nominal.err;
+  const auto jr = nlohmann::json::parse(read_file(dir / "robust/campaign.json"));
+  const auto jn = nlohmann::json::parse(read_file(dir / "nominal/campaign.json"));
+  EXPECT_EQ(jr["ok"], 100);
+  EXPECT_EQ(jr["violations"], 0);
+  EXPECT_EQ(jr["outcomes"].value("converged", 0L), 100);
+  EXPECT_EQ(jn["ok"], 100);
+  EXPECT_GT(jn["violations"].get<long>(), 0);
+  EXPECT_GT(jr["figures"]["min_pointing_margin"]["min"].get<double>(), 0.0);
+  EXPECT_LT(jn["figures"]["min_pointing_margin"]["min"].get<double>(), 0.0);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
   const auto dir = fresh_dir("campaign_replay");
   ASSERT_EQ(campaign(kExample, dir, "--runs 8 --seed 5").exit_code, 0);

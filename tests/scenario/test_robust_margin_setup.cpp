@@ -10,6 +10,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
@@ -114,6 +115,29 @@ TEST(RobustMarginSetup, KeysOnlyWhereTheyMeanSomething) {
   EXPECT_NE(error_of(robust_example("governor = \"pet\"", "governor = \"none\""))
                 .find("robust margins are margins of the governor"),
             std::string::npos);
+}
+
+// examples/pet_erg_robust_campaign.toml and its nominal twin are the same campaign but for the
+// margins (docs/pet-erg.md, section 14): every line equal outside the header comment, the name,
+// the description and the [control] margins lines.
+TEST(Examples, RobustCampaignPairDiffersOnlyInTheMargins) {
+  auto lines = [](const std::string& name) {
+    std::ifstream in(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "examples" / name);
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("#", 0) == 0 || line.rfind("name =", 0) == 0 || line.rfind("description =", 0) == 0 ||
+          line.rfind("margins =", 0) == 0 || line.rfind("robust_reference_step =", 0) == 0) {
+        continue;
+      }
+      out.push_back(line);
+    }
+    return out;
+  };
+  const std::vector<std::string> robust = lines("pet_erg_robust_campaign.toml");
+  const std::vector<std::string> nominal = lines("pet_erg_robust_campaign_nominal.toml");
+  EXPECT_GT(robust.size(), 80U);
+  EXPECT_EQ(robust, nominal);
+  EXPECT_TRUE(parse(robust_example()).params.robust.has_value());
 }
 
 }  // namespace

@@ -403,18 +403,28 @@ nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1
 
 /// The [imperfections] of the run, echoed in summary.json (docs/pet-erg.md, section 11).
 nlohmann::json imperfections_json(const PetErgImperfections& im) {
-  return {{"disturbance", std::string(dynamics::kDisturbanceKindNames.name(im.disturbance.kind))},
-          {"disturbance_bound", im.disturbance.bound},
-          {"attitude_error_bound", im.sensor.attitude_error_bound()},
-          {"rate_error_bound", im.sensor.rate_error_bound()},
-          {"delay_periods", im.delay_periods},
-          {"torque_quantum", im.torque_quantum}};
+  nlohmann::json j = {{"disturbance", std::string(dynamics::kDisturbanceKindNames.name(im.disturbance.kind))},
+                      {"disturbance_bound", im.disturbance.bound},
+                      {"attitude_error_bound", im.sensor.attitude_error_bound()},
+                      {"rate_error_bound", im.sensor.rate_error_bound()},
+                      {"attitude_bias_bound", im.attitude_bias_bound},
+                      {"rate_bias_bound", im.rate_bias_bound},
+                      {"delay_periods", im.delay_periods},
+                      {"torque_quantum", im.torque_quantum}};
+  if (im.disturbance.kind == dynamics::DisturbanceKind::adversarial) {
+    j["disturbance_update"] = std::string(kDisturbanceUpdateNames.name(im.adversary.update));
+    j["adversary_weight"] = im.adversary.weight;
+  }
+  return j;
 }
 
 /// The robust margin of the run (docs/pet-erg.md, section 13), echoed in summary.json.
-nlohmann::json robust_json(const PetErgScenario& sc) {
+nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
   const governor::RobustMargin& m = *sc.params.robust;
-  return {{"epsilon", m.epsilon},
+  // The guarantee assumes the wheels' momenta within their limits (checked, not governed).
+  const bool momentum_held = sc.wheels.empty() || r.max_wheel_momentum_ratio <= 1.0;
+  return {{"assumption_wheel_momentum_within_limits", momentum_held},
+          {"epsilon", m.epsilon},
           {"delta", m.delta},
           {"omega_max", m.omega_max},
           {"torque_error", m.torque_error},
@@ -487,7 +497,7 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
   j["margins"] = sc.params.robust ? "robust" : "nominal";
-  if (sc.params.robust) j["robust"] = robust_json(sc);
+  if (sc.params.robust) j["robust"] = robust_json(sc, r);
   if (!sc.wheels.empty()) {
     j["wheels"] = static_cast<long>(sc.wheels.size());
     j["wheel_gamma_d"] = sc.params.polytope_gamma_d;

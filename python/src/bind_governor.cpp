@@ -21,6 +21,9 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/scenario/argument_checks.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/sim/pet_erg_scenario.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -98,6 +101,14 @@ class PyGovernor {
              double c_gamma, double Ts, double epsilon, double epsilon_gamma)
       : gov_(make(J, kp, kd, tau_max, cones, mode, kappa, c_gamma, Ts, epsilon, epsilon_gamma)) {}
 
+  /// The governor exactly as the flight loop of a `pet_erg` scenario builds it: its wheels'
+  /// polytope, the bounded step with control_period > 0, and with margins = "robust" the robust
+  /// margins, reduced limits and tightened cones (docs/pet-erg.md, sections 10-13).
+  static PyGovernor from_scenario(const std::string& path) {
+    const sim::PetErgScenario sc = scenario::parse_pet_erg(scenario::load_document(path));
+    return PyGovernor(AttitudeGovernor(sim::governor_params(sc), sim::governor_cones(sc)));
+  }
+
   void reset(double t0, const Mat3& R_g0) {
     if (!std::isfinite(t0)) throw InputError(std::string(kLabelReset) + ": t0: must be finite");
     gov_.reset(t0, scenario::checked_rotation_matrix(R_g0, "R_g0", kLabelReset));
@@ -126,6 +137,8 @@ class PyGovernor {
   [[nodiscard]] const AttitudeGovernor& governor() const noexcept { return gov_; }
 
  private:
+  explicit PyGovernor(AttitudeGovernor gov) : gov_(std::move(gov)) {}
+
   static constexpr const char* kLabelReset = "Governor.reset()";
   static constexpr const char* kLabelStep = "Governor.step()";
 
@@ -210,6 +223,7 @@ void bind_governor(py::module_& m) {
       .def_readonly("xi_g", &GovernorOutput::xi_g)
       .def_readonly("rho", &GovernorOutput::rho)
       .def_readonly("V", &GovernorOutput::V)
+      .def_readonly("W", &GovernorOutput::W)
       .def_readonly("gamma_d", &GovernorOutput::gamma_d)
       .def_readonly("gamma_g", &GovernorOutput::gamma_g)
       .def_readonly("gamma", &GovernorOutput::gamma)
@@ -228,6 +242,11 @@ void bind_governor(py::module_& m) {
            py::arg("epsilon") = 1e-3, py::arg("epsilon_gamma") = 0.1,
            "kp, kd, tau_max are required (as in a scenario file); every argument is checked by "
            "the scenario readers (ValueError naming it).")
+      .def_static("from_scenario", &PyGovernor::from_scenario, py::arg("path"),
+                  "The governor of a pet_erg scenario file exactly as its flight loop builds it "
+                  "(wheel polytope, bounded step, robust margins with margins = \"robust\"; "
+                  "docs/pet-erg.md, sections 10-13). ValueError naming file, line and key on a "
+                  "bad file.")
       .def("reset", &PyGovernor::reset, py::arg("t0"), py::arg("R_g0"),
            "Start at t0 with R_g(t0) = R_g0 (PET-ERG paper, Sec. IV-A).")
       .def("step", &PyGovernor::step, py::arg("t"), py::arg("R"), py::arg("omega_b"),
@@ -244,7 +263,25 @@ void bind_governor(py::module_& m) {
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
            "V(R, ω, R_g) = ½ωᵀJω + k_p φ(RᵀR_g) (Sec. III-A).")
       .def("gamma", [](const PyGovernor& g, const Mat3& R_g) { return g.governor().gamma(R_g); },
-           py::arg("R_g"), "Γ(R_g) (Sec. III-B.1).")
+           py::arg("R_g"), "Γ(R_g) (Sec. III-B.1); Γ_W with robust margins (docs/pet-erg.md, section 13).")
+      .def("level", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
+             return g.governor().level(R, w, R_g);
+           }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
+           "The level compared with Γ: V, or W = V − ε ωᵀJ sk(RᵀR_g)^∨ with robust margins "
+           "(docs/pet-erg.md, section 13).")
+      .def_property_readonly("robust", [](const PyGovernor& g) -> py::object {
+        const auto& r = g.governor().params().robust;
+        if (!r) return py::none();
+        py::dict d;
+        d["epsilon"] = r->epsilon;
+        d["delta"] = r->delta;
+        d["gamma_min"] = r->gamma_min;
+        d["torque_error"] = r->torque_error;
+        d["command_error"] = r->command_error;
+        d["measurement_margin"] = r->measurement_margin;
+        d["max_reference_step"] = r->max_reference_step;
+        return d;
+      }, "The robust margin (docs/pet-erg.md, section 13) as a dict, or None with the nominal margins.")
       .def("trigger_condition", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
              return g.governor().trigger_condition(R, w, R_g);
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"), "Trigger (5): Γ(R_g) − c_Γ V ≥ 0.")

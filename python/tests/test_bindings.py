@@ -271,3 +271,33 @@ def test_public_names_resolve_and_are_listed():
     assert set(ag.__all__) <= set(dir(ag))
     with pytest.raises(AttributeError):
         ag.no_such_name  # noqa: B018
+
+
+def test_governor_from_scenario_is_the_flight_loops_robust_governor(tmp_path):
+    """Governor.from_scenario builds the governor of a pet_erg file as its flight loop does
+    (docs/pet-erg.md, section 13): with margins = "robust" the level is W and Γ is Γ_W."""
+    import pathlib
+    import numpy as np
+    import attiguard
+    text = (pathlib.Path(__file__).resolve().parents[2] / "examples" / "pet_erg_robust_campaign.toml").read_text()
+    path = tmp_path / "robust.toml"
+    path.write_text(text[: text.index("[dispersions]")])
+    gov = attiguard.Governor.from_scenario(str(path))
+    robust = gov.robust
+    assert robust is not None and robust["gamma_min"] > 0.0 and 0.0 < robust["delta"] < 1.0
+    gov.reset(0.0, np.eye(3))
+    R_d = attiguard.expm(np.array([0.0, 0.0, 120.0 * np.pi / 180.0]))
+    R = attiguard.expm(np.array([0.01, 0.0, 0.0]))
+    out = gov.step(0.0, R, np.array([1e-3, -1e-3, 5e-4]), R_d)
+    assert out.W == gov.level(R, np.array([1e-3, -1e-3, 5e-4]), np.eye(3))
+    assert out.W != out.V
+    assert out.gamma == gov.gamma(np.eye(3))
+    nominal = tmp_path / "nominal.toml"
+    nominal.write_text(text[: text.index("[dispersions]")].replace('margins = "robust"', 'margins = "nominal"')
+                       .replace("robust_reference_step", "# robust_reference_step"))
+    assert attiguard.Governor.from_scenario(str(nominal)).robust is None
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text[: text.index("[dispersions]")].replace("disturbance_bound = 0.003", "disturbance_bound = 0.03"))
+    import pytest
+    with pytest.raises(ValueError, match="control.margins: no admissible set with robust margins"):
+        attiguard.Governor.from_scenario(str(bad))

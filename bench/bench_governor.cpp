@@ -93,8 +93,8 @@ BENCHMARK(BM_GovernorFlightStep);
 
 // One step of the pet_erg flight loop with a 4-wheel pyramid (docs/pet-erg.md, sections 10 and
 // 12): AttitudeGovernor::step with the bounded reference step and the polytope's Γ_d, then the
-// allocation u = A⁺τ to the wheels, as on board. (The robust margins of issue 14 are not
-// implemented: this is the nominal step.)
+// allocation u = A⁺τ to the wheels, as on board, on the paper's craft with one fixed state.
+// The step of a flight-like scenario, with robust or nominal margins: BM_RobustWheelFlightStep.
 void BM_WheelFlightStep(benchmark::State& state) {
   GovernorParams p = paper_params();
   p.bounded_step = true;
@@ -124,13 +124,18 @@ BENCHMARK(BM_WheelFlightStep);
 
 // ---- the flight-loop step of examples/pet_erg_robust_campaign.toml (issue 14) ----
 
-/// What the flight software receives at control instant k: t_k and the measured (R, ω); and
-/// R_g after the flight loop's step k (to check that the replay is that flight loop).
+/// What the flight software receives at control instant k: t_k and the measured (R, ω).
 struct MeasuredSample {
   double t{0.0};
   Mat3 R_ib{Mat3::Identity()};
   Vec3 omega_b{Vec3::Zero()};
-  Mat3 R_g{Mat3::Identity()};
+};
+
+/// The measured states of a flight loop and R_g after each of its steps (to check that the
+/// replay is that flight loop; kept apart so that the replayed ring stays small, 1.6 MB).
+struct FlightRecord {
+  std::vector<MeasuredSample> ring;
+  std::vector<Mat3> R_g;
 };
 
 /// The nominal scenario of an example campaign file (its [dispersions] removed), parsed by the
@@ -144,21 +149,22 @@ attiguard::sim::PetErgScenario example_scenario(const std::string& name) {
 /// (simulate_pet_erg with one output row per control period; each true state measured by the
 /// scenario's sensor model with the sample index the flight loop uses), so that the benchmark
 /// replays the states the governor really sees over the whole manoeuvre.
-std::vector<MeasuredSample> measured_states(attiguard::sim::PetErgScenario sc) {
+FlightRecord measured_states(attiguard::sim::PetErgScenario sc) {
   sc.output_interval = sc.control_period;
-  std::vector<MeasuredSample> ring;
+  FlightRecord rec;
   (void)attiguard::sim::simulate_pet_erg(
       sc, [&](double t, const attiguard::sim::PetErgState& y, const Mat3&,
               const attiguard::governor::GovernorOutput&) {
-        const auto k = static_cast<std::uint64_t>(ring.size());
+        const auto k = static_cast<std::uint64_t>(rec.ring.size());
         const auto m = sc.imperfections.sensor.measure(y.R[0], y.x, k);
-        ring.push_back({t, m.R_ib, m.omega_b, y.R[1]});
+        rec.ring.push_back({t, m.R_ib, m.omega_b});
+        rec.R_g.push_back(y.R[1]);
       });
-  return ring;
+  return rec;
 }
 
-// One control instant of the pet_erg flight loop (sim/pet_erg_run.cpp, simulate_flight_loop's
-// `control`, without the sensor draw: the measured state comes from the ring above): R_d(t),
+// One control instant of the pet_erg flight loop (docs/pet-erg.md, sections 11-13;
+// sim/pet_erg_run.cpp, simulate_flight_loop's `control`, without the sensor draw: the measured state comes from the ring above): R_d(t),
 // AttitudeGovernor::step on the measured state, quantisation of the torque, allocation u = A⁺τ
 // to the 4 wheels. The governor and the wheels are built as the flight loop builds them
 // (sim::governor_params / governor_cones of the parsed example). The states are replayed in
@@ -173,15 +179,17 @@ void BM_RobustWheelFlightStep(benchmark::State& state) {
     state.SkipWithError("the example does not have the expected margins and 4 wheels");
     return;
   }
-  const std::vector<MeasuredSample> ring = measured_states(sc);
+  const FlightRecord rec = measured_states(sc);
+  const std::vector<MeasuredSample>& ring = rec.ring;
   AttitudeGovernor gov(attiguard::sim::governor_params(sc), attiguard::sim::governor_cones(sc));
   const attiguard::dynamics::ReactionWheelArray array(sc.wheels);
   const double quantum = sc.imperfections.torque_quantum;
   // Untimed: the replay moves R_g exactly as the simulated flight loop did.
   gov.reset(0.0, sc.R_g0);
-  for (const MeasuredSample& m : ring) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const MeasuredSample& m = ring[i];
     (void)gov.step(m.t, m.R_ib, m.omega_b, sc.desired.at(m.t));
-    if (!(attiguard::lie::distance(gov.reference(), m.R_g) < 1e-9)) {
+    if (!(attiguard::lie::distance(gov.reference(), rec.R_g[i]) < 1e-9)) {
       state.SkipWithError("the replayed governor departs from the flight loop's R_g");
       return;
     }

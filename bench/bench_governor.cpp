@@ -2,15 +2,21 @@
 // evaluation, one flight-loop step, the offline Γ_d, and the whole Sec. V scenario (60 s).
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include "attiguard/control/torque_quantizer.hpp"
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/governor/polytope_torque_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/pet_erg_scenario.hpp"
 
 namespace {
 
@@ -87,8 +93,8 @@ BENCHMARK(BM_GovernorFlightStep);
 
 // One step of the pet_erg flight loop with a 4-wheel pyramid (docs/pet-erg.md, sections 10 and
 // 12): AttitudeGovernor::step with the bounded reference step and the polytope's Γ_d, then the
-// allocation u = A⁺τ to the wheels, as on board. (The robust margins of issue 14 are not
-// implemented: this is the nominal step.)
+// allocation u = A⁺τ to the wheels, as on board, on the paper's craft with one fixed state.
+// The step of a flight-like scenario, with robust or nominal margins: BM_RobustWheelFlightStep.
 void BM_WheelFlightStep(benchmark::State& state) {
   GovernorParams p = paper_params();
   p.bounded_step = true;
@@ -115,6 +121,97 @@ void BM_WheelFlightStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_WheelFlightStep);
+
+// ---- the flight-loop step of examples/pet_erg_robust_campaign.toml (issue 14) ----
+
+/// What the flight software receives at control instant k: t_k and the measured (R, ω).
+struct MeasuredSample {
+  double t{0.0};
+  Mat3 R_ib{Mat3::Identity()};
+  Vec3 omega_b{Vec3::Zero()};
+};
+
+/// The measured states of a flight loop and R_g after each of its steps (to check that the
+/// replay is that flight loop; kept apart so that the replayed ring stays small, 1.6 MB).
+struct FlightRecord {
+  std::vector<MeasuredSample> ring;
+  std::vector<Mat3> R_g;
+};
+
+/// The nominal scenario of an example campaign file (its [dispersions] removed), parsed by the
+/// `pet_erg` kind: the governor parameters, cones and wheels are the flight loop's own.
+attiguard::sim::PetErgScenario example_scenario(const std::string& name) {
+  const auto doc = attiguard::scenario::load_document(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + name);
+  return attiguard::scenario::parse_pet_erg(attiguard::scenario::nominal_document(doc));
+}
+
+/// The measured states of every control instant of the scenario's own flight loop
+/// (simulate_pet_erg with one output row per control period; each true state measured by the
+/// scenario's sensor model with the sample index the flight loop uses), so that the benchmark
+/// replays the states the governor really sees over the whole manoeuvre.
+FlightRecord measured_states(attiguard::sim::PetErgScenario sc) {
+  sc.output_interval = sc.control_period;
+  FlightRecord rec;
+  (void)attiguard::sim::simulate_pet_erg(
+      sc, [&](double t, const attiguard::sim::PetErgState& y, const Mat3&,
+              const attiguard::governor::GovernorOutput&) {
+        const auto k = static_cast<std::uint64_t>(rec.ring.size());
+        const auto m = sc.imperfections.sensor.measure(y.R[0], y.x, k);
+        rec.ring.push_back({t, m.R_ib, m.omega_b});
+        rec.R_g.push_back(y.R[1]);
+      });
+  return rec;
+}
+
+// One control instant of the pet_erg flight loop (docs/pet-erg.md, sections 11-13;
+// sim/pet_erg_run.cpp, simulate_flight_loop's `control`, without the sensor draw: the measured state comes from the ring above): R_d(t),
+// AttitudeGovernor::step on the measured state, quantisation of the torque, allocation u = A⁺τ
+// to the 4 wheels. The governor and the wheels are built as the flight loop builds them
+// (sim::governor_params / governor_cones of the parsed example). The states are replayed in
+// order over the whole 1500 s manoeuvre; at its end the governor is reset to R_g(0) and the
+// manoeuvre replays (the reset is timed, once per 15 001 steps). Arg 1: robust margins
+// (examples/pet_erg_robust_campaign.toml), arg 0: nominal margins (its _nominal twin).
+void BM_RobustWheelFlightStep(benchmark::State& state) {
+  const bool robust = state.range(0) == 1;
+  const auto sc = example_scenario(robust ? "pet_erg_robust_campaign.toml"
+                                          : "pet_erg_robust_campaign_nominal.toml");
+  if (sc.params.robust.has_value() != robust || sc.wheels.size() != 4) {
+    state.SkipWithError("the example does not have the expected margins and 4 wheels");
+    return;
+  }
+  const FlightRecord rec = measured_states(sc);
+  const std::vector<MeasuredSample>& ring = rec.ring;
+  AttitudeGovernor gov(attiguard::sim::governor_params(sc), attiguard::sim::governor_cones(sc));
+  const attiguard::dynamics::ReactionWheelArray array(sc.wheels);
+  const double quantum = sc.imperfections.torque_quantum;
+  // Untimed: the replay moves R_g exactly as the simulated flight loop did.
+  gov.reset(0.0, sc.R_g0);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const MeasuredSample& m = ring[i];
+    (void)gov.step(m.t, m.R_ib, m.omega_b, sc.desired.at(m.t));
+    if (!(attiguard::lie::distance(gov.reference(), rec.R_g[i]) < 1e-9)) {
+      state.SkipWithError("the replayed governor departs from the flight loop's R_g");
+      return;
+    }
+  }
+  gov.reset(0.0, sc.R_g0);
+  std::size_t k = 0;
+  long samples = 0;
+  for (auto _ : state) {
+    const MeasuredSample& m = ring[k];
+    const auto& out = gov.step(m.t, m.R_ib, m.omega_b, sc.desired.at(m.t));
+    const auto u = array.allocate(attiguard::control::quantize_torque(out.tau_b, quantum));
+    benchmark::DoNotOptimize(u);
+    samples += out.sampled ? 1 : 0;
+    if (++k == ring.size()) {
+      k = 0;
+      gov.reset(0.0, sc.R_g0);
+    }
+  }
+  state.counters["ring"] = static_cast<double>(ring.size());
+  state.counters["sampled"] = benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_RobustWheelFlightStep)->ArgName("robust")->Arg(0)->Arg(1);
 
 // Offline Γ_d to 1e-12 (once per governor construction).
 void BM_TorqueThresholdOffline(benchmark::State& state) {

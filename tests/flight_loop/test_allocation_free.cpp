@@ -35,7 +35,12 @@
 #include "attiguard/lie/axis_angle.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/scenario/dispersion.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
+#include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/pet_erg_scenario.hpp"
 
 namespace {
 
@@ -270,6 +275,79 @@ TEST(AllocationFree, AdversarialDisturbanceInAFlightLoop) {
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations with the adversarial disturbance";
   EXPECT_NEAR(largest, 0.05, 1e-12);  // the adversary really acted, at its bound
+}
+
+// One control instant of the pet_erg flight loop with robust margins and 4 wheels
+// (sim/pet_erg_run.cpp, simulate_flight_loop's `control`; docs/pet-erg.md, sections 11-13):
+// sensor draw, R_d(t), governor step, quantisation, allocation. Declared noexcept throughout.
+static_assert(noexcept(std::declval<const dynamics::ReactionWheelArray&>().allocate(control::quantize_torque(
+    std::declval<governor::AttitudeGovernor&>()
+        .step(0.0, std::declval<const dynamics::AttitudeSensor&>().measure(
+                       std::declval<const Mat3&>(), std::declval<const Vec3&>(), 0).R_ib,
+              std::declval<const Vec3&>(), std::declval<const governor::ReferenceSchedule&>().at(0.0))
+        .tau_b,
+    0.0))));
+
+TEST(AllocationFree, RobustWheelFlightLoopOfTheRobustCampaignExample) {
+  // examples/pet_erg_robust_campaign.toml without its [dispersions] (robust margins, 4-wheel
+  // pyramid, 10 Hz loop, sensor bias and noise, quantisation, adversarial disturbance) and its
+  // nominal twin. The true states of every control instant come from the scenario's own flight
+  // loop (simulate_pet_erg, one row per control period, rows after the control instant); the
+  // counted calls replay that loop's control instants and must move R_g exactly as it did.
+  for (const char* name : {"pet_erg_robust_campaign.toml", "pet_erg_robust_campaign_nominal.toml"}) {
+    const scenario::Document doc =
+        scenario::load_document(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + name);
+    sim::PetErgScenario sc = scenario::parse_pet_erg(scenario::nominal_document(doc));
+    const bool robust = std::string(name) == "pet_erg_robust_campaign.toml";
+    ASSERT_EQ(sc.params.robust.has_value(), robust) << name;
+    ASSERT_EQ(sc.wheels.size(), 4U) << name;
+    ASSERT_GT(sc.control_period, 0.0) << name;
+    sc.output_interval = sc.control_period;
+    struct Row {
+      double t;
+      Mat3 R_ib;
+      Vec3 omega_b;
+      Mat3 R_g;
+    };
+    std::vector<Row> rows;
+    (void)sim::simulate_pet_erg(sc, [&](double t, const sim::PetErgState& y, const Mat3&,
+                                        const governor::GovernorOutput&) {
+      rows.push_back({t, y.R[0], y.x, y.R[1]});
+    });
+    ASSERT_GT(rows.size(), 10000U) << name;
+
+    governor::AttitudeGovernor gov(sim::governor_params(sc), sim::governor_cones(sc));
+    const dynamics::ReactionWheelArray array(sc.wheels);
+    const dynamics::AttitudeSensor& sensor = sc.imperfections.sensor;
+    const double quantum = sc.imperfections.torque_quantum;
+    gov.reset(0.0, sc.R_g0);
+    g_allocations = 0;
+    double largest_departure = 0.0;
+    double largest_wheel_torque = 0.0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const Row& row = rows[k];
+      const dynamics::WheelVector u = counted([&] {
+        const dynamics::Measurement m = sensor.measure(row.R_ib, row.omega_b, static_cast<std::uint64_t>(k));
+        const governor::GovernorOutput& out = gov.step(row.t, m.R_ib, m.omega_b, sc.desired.at(row.t));
+        return array.allocate(control::quantize_torque(out.tau_b, quantum));
+      });
+      largest_departure = std::max(largest_departure, lie::distance(gov.reference(), row.R_g));
+      for (int i = 0; i < array.count(); ++i) {
+        largest_wheel_torque = std::max(largest_wheel_torque, std::abs(u[static_cast<std::size_t>(i)]));
+      }
+    }
+    EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << rows.size()
+                                       << " control instants of " << name;
+    // The counted calls are the flight loop's: the same reference at every instant ...
+    EXPECT_LT(largest_departure, 1e-9) << name;
+    // ... which really moved R_g (the robust run to the end of the 120° slew; the nominal run
+    // stops short of it), with torque on the wheels.
+    EXPECT_GT(lie::distance(gov.reference(), sc.R_g0), 0.5) << name;
+    if (robust) {
+      EXPECT_LT(lie::distance(gov.reference(), sc.desired.at(sc.duration)), 1e-2) << name;
+    }
+    EXPECT_GT(largest_wheel_torque, 1e-3) << name;
+  }
 }
 
 TEST(AllocationFree, QuaternionPidStepTrackingATurn) {

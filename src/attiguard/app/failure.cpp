@@ -7,6 +7,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "attiguard/core/four_digits.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
@@ -22,13 +23,6 @@ constexpr const char* kWhatIsLarge =
     "the scenario asks for more than this machine can hold: reduce what scales the memory "
     "(simulation duration over output_interval or control_period, partition cells, soundness "
     "samples, output.boundary_points, campaign runs)";
-
-/// 4 significant digits.
-std::string approx(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 /// "FILE:LINE:COL: TABLE.KEY: message" located at `key` of [table] of `doc` (as an input error
 /// would be; at the table when the key was left to its default).
@@ -63,10 +57,10 @@ std::string step_hint(const scenario::Document& doc, const integrate::Integrator
   if (s.method != integrate::Method::rkmk4 || !(fastest * s.step > 2.0)) return "";
   const double limit = 2.0 / fastest;
   return at_key(doc, "simulation", "step",
-                approx(s.step) + " s is above the stability limit ~ 2/lambda_max = " +
-                    approx(limit) + " s of this inertia and these gains (lambda_max ~ " +
-                    approx(fastest) + " 1/s): use integrator = \"rkmk_dp54\" or step <= " +
-                    approx(limit));
+                four_digits(s.step) + " s is above the stability limit ~ 2/lambda_max = " +
+                    four_digits(limit) + " s of this inertia and these gains (lambda_max ~ " +
+                    four_digits(fastest) + " 1/s): use integrator = \"rkmk_dp54\" or step <= " +
+                    four_digits(limit));
 }
 
 std::string hint_of(const scenario::Document& doc) {
@@ -86,10 +80,10 @@ std::string hint_of(const scenario::Document& doc) {
     const double turn = p.kappa * gov.gamma_d() * h;  // rad per step at the largest margin
     if (p.mode != governor::GovernorMode::none && h > 0.0 && turn > 1.0) {
       return at_key(doc, "erg", "kappa",
-                    approx(p.kappa) + " turns the reference at up to kappa Gamma_d = " +
-                        approx(p.kappa * gov.gamma_d()) + " rad/s, " + approx(turn) +
-                        " rad per integrator step of " + approx(h) + " s: use kappa <= " +
-                        approx(1.0 / (gov.gamma_d() * h)));
+                    four_digits(p.kappa) + " turns the reference at up to kappa Gamma_d = " +
+                        four_digits(p.kappa * gov.gamma_d()) + " rad/s, " + four_digits(turn) +
+                        " rad per integrator step of " + four_digits(h) + " s: use kappa <= " +
+                        four_digits(1.0 / (gov.gamma_d() * h)));
     }
     return step_hint(doc, sc.integrator,
                      fastest_rate(p.J, p.gains.kp, p.gains.kd, sc.omega0_b.norm()));

@@ -10,18 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "attiguard/core/four_digits.hpp"
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/core/errors.hpp"
 
 namespace attiguard::governor {
 
 namespace {
-
-std::string g(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw SetupError("robust margins: " + what);
@@ -214,10 +209,10 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     m.gamma_min = wbar * wbar * ultimate_level_bound(m.a, m.b, m.c, m.epsilon, 0.5 * lmax, kp / (2.0 - phi_top),
                                                      m.epsilon * lmax);
   }
-  require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + g(kp) +
-                               ", kd = " + g(kd) + " and the inertia's lambda_max = " + g(lmax) +
+  require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + four_digits(kp) +
+                               ", kd = " + four_digits(kd) + " and the inertia's lambda_max = " + four_digits(lmax) +
                                (bias_coupling > 0.0 ? " with the attitude bias coupling kp 2 sin(beta/2) = " +
-                                                          g(bias_coupling) + " N m (beta = " + g(in.attitude_bias) +
+                                                          four_digits(bias_coupling) + " N m (beta = " + four_digits(in.attitude_bias) +
                                                           " rad): reduce the bias bound or raise kd"
                                                     : ": raise kd"));
   const double sr = in.attitude_noise;

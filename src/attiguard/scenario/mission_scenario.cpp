@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "attiguard/core/four_digits.hpp"
 #include "attiguard/guidance/leg_attitudes.hpp"
 
 #include "attiguard/scenario/common_tables.hpp"
@@ -18,12 +19,6 @@
 namespace attiguard::scenario {
 
 namespace {
-
-std::string g4(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 /// Rejects a mission whose predicted steady desired attitude (guidance/leg_attitudes.hpp) violates
 /// a cone or lies in its repulsive band (c < ζ, PET-ERG paper's navigation field): the governed
@@ -45,8 +40,8 @@ void check_leg_attitudes(const TableReader& root, const sim::MissionScenario& sc
                             (leg.braking ? " while braking (x_b away from the waypoint)"
                                          : " (x_b towards the waypoint)") +
                             " lies " + (c < cone.cos_theta_c ? "inside" : "in the repulsive band of") +
-                            " cones[" + std::to_string(i) + "] (a_c^T R_d a_b = " + g4(c) +
-                            " < zeta = " + g4(cone.zeta) +
+                            " cones[" + std::to_string(i) + "] (a_c^T R_d a_b = " + four_digits(c) +
+                            " < zeta = " + four_digits(cone.zeta) +
                             "): the governed attitude cannot reach it; move the waypoint or the cone");
       }
     }

@@ -11,6 +11,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "attiguard/core/four_digits.hpp"
 #include "attiguard/guidance/craft_defaults.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/common_tables.hpp"
@@ -22,13 +23,6 @@ namespace attiguard::scenario {
 namespace {
 
 std::string num(double x) { return detail::format_number(x); }
-
-/// A derived figure in a message: 4 significant digits.
-std::string g4(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 constexpr double kPi = 3.14159265358979323846;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
@@ -219,32 +213,32 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   const double band_p = guidance::rct_position_dead_band(limits, mp.rct, mp.rct_threshold);
   if (mp.rct.kappa_p > 0.0 && band_p > mp.position_accuracy) {
     fail_fine("kappa_p", "position_accuracy",
-              "position_accuracy " + g4(mp.position_accuracy) + " m is unreachable: the RCT (" +
-                  g4(limits.a_rct()) + " m/s^2) stop firing within " + g4(band_p) +
-                  " m of the waypoint with kappa_p = " + g4(mp.rct.kappa_p));
+              "position_accuracy " + four_digits(mp.position_accuracy) + " m is unreachable: the RCT (" +
+                  four_digits(limits.a_rct()) + " m/s^2) stop firing within " + four_digits(band_p) +
+                  " m of the waypoint with kappa_p = " + four_digits(mp.rct.kappa_p));
   }
   const double band_v = guidance::rct_speed_dead_band(limits, mp.rct, mp.rct_threshold);
   // At the band itself the position term of (28) still fires (waypoint_fine.toml flies at
   // band = δ_v); twice the accuracy is out of reach.
   if (band_v > 2.0 * mp.speed_accuracy) {
     fail_fine("kappa_d", "speed_accuracy",
-              "speed_accuracy " + g4(mp.speed_accuracy) + " m/s is unreachable: the RCT (" +
-                  g4(limits.a_rct()) + " m/s^2) stop firing below " + g4(band_v) +
-                  " m/s with kappa_d = " + g4(mp.rct.kappa_d) + " (more than twice the accuracy)");
+              "speed_accuracy " + four_digits(mp.speed_accuracy) + " m/s is unreachable: the RCT (" +
+                  four_digits(limits.a_rct()) + " m/s^2) stop firing below " + four_digits(band_v) +
+                  " m/s with kappa_d = " + four_digits(mp.rct.kappa_d) + " (more than twice the accuracy)");
   }
   const double quantum = guidance::rct_speed_quantum(limits);
   if (quantum > mp.speed_accuracy) {
-    g.fail("speed_accuracy", "speed_accuracy " + g4(mp.speed_accuracy) +
+    g.fail("speed_accuracy", "speed_accuracy " + four_digits(mp.speed_accuracy) +
                                  " m/s is unreachable: one control period of one RCT changes the "
-                                 "speed by " + g4(quantum) + " m/s (more than the accuracy)");
+                                 "speed by " + four_digits(quantum) + " m/s (more than the accuracy)");
   }
   const double v_left = guidance::main_speed_left(limits, mp.main_cutoff_speed);
   const double s_rct = guidance::rct_stopping_distance(limits, v_left);
   if (s_rct > mp.replan_distance) {
-    craft.fail("rct_thrust", "thruster authority too small: the RCT (" + g4(limits.a_rct()) +
-                                 " m/s^2) need " + g4(s_rct) + " m to stop the " + g4(v_left) +
+    craft.fail("rct_thrust", "thruster authority too small: the RCT (" + four_digits(limits.a_rct()) +
+                                 " m/s^2) need " + four_digits(s_rct) + " m to stop the " + four_digits(v_left) +
                                  " m/s the main engine leaves at cut-off, more than "
-                                 "guidance.replan_distance (" + g4(mp.replan_distance) + " m)");
+                                 "guidance.replan_distance (" + four_digits(mp.replan_distance) + " m)");
   }
 
   // Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
@@ -264,8 +258,8 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
                   "waypoint " + std::to_string(k) + " is unreachable within simulation.duration (" +
                       num(sc.duration) + " s): even bang-bang at T_max/m = " + num(a_max) +
                       " m/s^2 needs " + num(t_min) + " s to get there" +
-                      (t_flips > 0.0 ? " plus " + g4(t_flips) + " s of flips at max_wheel_torque " +
-                                           g4(sc.max_wheel_torque) + " N m"
+                      (t_flips > 0.0 ? " plus " + four_digits(t_flips) + " s of flips at max_wheel_torque " +
+                                           four_digits(sc.max_wheel_torque) + " N m"
                                      : std::string()));
     }
   }

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "attiguard/core/four_digits.hpp"
 #include "attiguard/control/torque_quantizer.hpp"
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
@@ -443,42 +444,36 @@ nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
           {"start_allowance", m.start_allowance}};
 }
 
-std::string fmt(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
-
 /// One sentence with the numbers of a run that did not converge (docs/pet-erg.md, "Outcomes").
 std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
   const double left_deg = r.reference_distance_left * 180.0 / std::numbers::pi;
-  const std::string error = "attitude error phi = " + fmt(r.final_attitude_error) +
-                            " > tolerance " + fmt(sc.convergence_tolerance) + " at t = " +
-                            fmt(sc.duration) + " s";
+  const std::string error = "attitude error phi = " + four_digits(r.final_attitude_error) +
+                            " > tolerance " + four_digits(sc.convergence_tolerance) + " at t = " +
+                            four_digits(sc.duration) + " s";
   std::string cones;
   for (int i : r.active_cones) cones += (cones.empty() ? "" : ", ") + std::to_string(i);
   const std::string active =
       cones.empty() ? "no cone's repulsive band active" : "repulsive band of cones [" + cones + "] active";
   switch (r.outcome) {
     case PetErgOutcome::stalled:
-      return "reference stopped " + fmt(left_deg) + " deg short of R_d (moved " +
-             fmt(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
+      return "reference stopped " + four_digits(left_deg) + " deg short of R_d (moved " +
+             four_digits(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
              " deg over the last half of the run, " + active + "); " + error;
     case PetErgOutcome::chattering:
       return "reference chatters: over the last half of the run it travelled " +
-             fmt(r.reference_motion.path_length() * 180.0 / std::numbers::pi) + " deg for a net " +
-             fmt(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
+             four_digits(r.reference_motion.path_length() * 180.0 / std::numbers::pi) + " deg for a net " +
+             four_digits(r.reference_motion.displacement() * 180.0 / std::numbers::pi) +
              " deg, reversing its direction " + std::to_string(r.reference_motion.reversals()) +
              " times (largest step " +
-             fmt(r.reference_motion.largest_move() * 180.0 / std::numbers::pi) +
+             four_digits(r.reference_motion.largest_move() * 180.0 / std::numbers::pi) +
              " deg); reduce kappa or the integrator step, or set control_period; " + error;
     case PetErgOutcome::not_converged_by_end:
       if (r.reference_distance_left <= std::acos(std::max(-1.0, 1.0 - sc.convergence_tolerance))) {
-        return "reference at R_d (" + fmt(left_deg) +
+        return "reference at R_d (" + four_digits(left_deg) +
                " deg left) but the attitude has not settled within the tolerance (slow damping, "
                "a disturbance or a sensor bias); " + error;
       }
-      return "still " + fmt(left_deg) + " deg between reference and R_d (" + active + "); " + error;
+      return "still " + four_digits(left_deg) + " deg between reference and R_d (" + active + "); " + error;
     case PetErgOutcome::converged:
       break;
   }

@@ -16,15 +16,13 @@
 
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/tune_table.hpp"
 
 namespace attiguard::app {
 
-/// One tuned key, searched log-uniformly on [min, max] (0 < min <= max).
-struct TuneParameter {
-  std::string key;  ///< key path, e.g. "control.kp"
-  double min{0.0};
-  double max{0.0};
-};
+/// One tuned key, searched log-uniformly on [min, max] (0 < min <= max): the entry of a
+/// `[tune.ranges]` table or a `--range` (one definition, scenario/tune_table.hpp).
+using TuneParameter = scenario::TuneRange;
 
 /// What to search and how long.
 struct TuneSettings {

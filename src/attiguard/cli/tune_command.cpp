@@ -35,7 +35,7 @@ app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneT
   app::TuneSettings s;
   for (const std::string& r : args.ranges) s.parameters.push_back(app::parse_tune_range(r));
   if (s.parameters.empty()) {
-    for (const scenario::TuneRange& r : table.ranges) s.parameters.push_back({r.key, r.min, r.max});
+    s.parameters = table.ranges;
   }
   if (s.parameters.empty()) s.parameters = app::default_tune_parameters(nominal);
   s.budget = args.budget.value_or(table.budget.value_or(64));

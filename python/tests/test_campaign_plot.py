@@ -70,3 +70,20 @@ def test_campaign_title_is_the_scenario_name_and_every_dispersed_column_gets_a_p
     run = campaign.load(tmp_path)
     assert run.name == "my_campaign"
     assert campaign._dispersed(run) == names
+
+
+def test_compare_overlays_one_figure_of_several_campaigns(tmp_path, capsys):
+    for name, rows in (("robust", ROWS[:1] + ROWS[3:]), ("nominal", ROWS)):
+        d = tmp_path / name
+        d.mkdir()
+        (d / "runs.csv").write_text(HEADER + "\n" + "\n".join(rows) + "\n")
+        (d / "campaign.json").write_text(json.dumps({"name": name, "violations": 0 if name == "robust" else 1}))
+    out = tmp_path / "cmp.png"
+    assert main(["compare", str(tmp_path / "robust"), str(tmp_path / "nominal"), "--out", str(out)]) == 0
+    assert capsys.readouterr().out.strip() == str(out)
+    assert out.stat().st_size > 1000
+    # one directory, or a column runs.csv does not have: usage errors naming the problem
+    assert main(["compare", str(tmp_path / "robust"), "--out", str(out)]) == 2
+    assert main(["compare", str(tmp_path / "robust"), str(tmp_path / "nominal"), "--figure", "nope",
+                 "--out", str(out)]) == 2
+    assert "no column 'nope'" in capsys.readouterr().err

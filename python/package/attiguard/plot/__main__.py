@@ -38,7 +38,35 @@ def _missing_message(missing: list[str]) -> str:
             f"/usr/bin/python3 (use /usr/bin/python3 after: {install})")
 
 
+def _compare(argv: list[str]) -> int:
+    """``python3 -m attiguard.plot compare DIR DIR ... --figure NAME --out PNG``: overlaid
+    histograms of one runs.csv figure of several campaigns (campaign.compare)."""
+    parser = argparse.ArgumentParser(
+        prog="python3 -m attiguard.plot compare",
+        description="Overlaid histograms of one figure of several `attiguard campaign` directories.",
+    )
+    parser.add_argument("dirs", type=Path, nargs="+", help="campaign output directories")
+    parser.add_argument("--figure", default="min_pointing_margin", help="a column of runs.csv")
+    parser.add_argument("--out", type=Path, required=True, help="the PNG to write")
+    args = parser.parse_args(argv)
+    missing = _missing_dependencies()
+    if missing:
+        _error(_missing_message(missing))
+        return EXIT_DEPENDENCY_MISSING
+    from .campaign import compare, load
+
+    try:
+        print(compare([load(d) for d in args.dirs], args.figure, args.out))
+    except PlotInputError as e:
+        _error(f"error: {e}")
+        return EXIT_USAGE
+    return EXIT_OK
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv and argv[0] == "compare":
+        return _compare(argv[1:])
     parser = argparse.ArgumentParser(
         prog="python3 -m attiguard.plot",
         description="Write PNG plots of an `attiguard run` output directory.",

@@ -212,6 +212,45 @@ def envelopes(run: CampaignRun) -> Path | None:
     return out
 
 
+def compare(runs: list[CampaignRun], figure: str, out: Path) -> Path:
+    """Overlaid histograms of one figure of runs.csv for several campaigns of the same scenario
+    with one setting changed, e.g. the robust / nominal pair of docs/pet-erg.md section 14: one
+    colour per campaign, its ok runs and violations in the legend, the zero of a margin marked."""
+    from matplotlib.figure import Figure
+
+    if len(runs) < 2:
+        raise PlotInputError("compare needs at least two campaign directories")
+    series = []
+    for run in runs:
+        if figure not in run.columns:
+            raise PlotInputError(f"{run.dir / 'runs.csv'}: no column '{figure}'")
+        ok = np.array([s == "ok" for s in run.status])
+        values = run.columns[figure][ok]
+        series.append((run, values[np.isfinite(values)], int(ok.sum())))
+    lo = min(float(v.min()) for _, v, _ in series if v.size)
+    hi = max(float(v.max()) for _, v, _ in series if v.size)
+    bins = np.linspace(lo, hi, 81) if hi > lo else 10
+    fig = Figure(figsize=(8.0, 4.5), dpi=DPI)
+    ax = fig.subplots()
+    for run, values, ok in series:
+        below = int((values < 0.0).sum()) if "margin" in figure else None
+        label = f"{run.name}: {ok} runs ok, violations {run.summary.get('violations', '?')}"
+        if below is not None:
+            label += f", {figure} < 0 in {below}"
+        ax.hist(values, bins=bins, alpha=0.6, label=label)
+    if "margin" in figure:
+        ax.axvline(0.0, color="tab:red", lw=1.0)
+    ax.set_xlabel(figure)
+    ax.set_ylabel("runs")
+    ax.set_yscale("log")
+    ax.grid(True, alpha=0.4)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    out = Path(out)
+    fig.savefig(out)
+    return out
+
+
 def plot(run: CampaignRun) -> list[Path]:
     written = [histograms(run)]
     s = scatter(run)

@@ -371,6 +371,21 @@ TEST(AllocationFree, QuaternionPidStepTrackingATurn) {
                                      << " calls of QuaternionPid::step";
 }
 
+/// Plant (2)-(5) of the waypoint paper over one control period dt, Lie-Euler in 10 substeps,
+/// the commands held (outside the counted window).
+void fly(const dynamics::SpacecraftPlant& plant, const guidance::MissionCommand& cmd,
+         guidance::MissionInputs& in) {
+  constexpr int substeps = 10;
+  const double h = in.dt / substeps;
+  for (int s = 0; s < substeps; ++s) {
+    const Vec3 a_i = plant.acceleration_i(in.R_ib, cmd.inputs);
+    in.omega_b += h * plant.body().angular_acceleration(in.omega_b, plant.applied_torque(cmd.inputs.tau_b));
+    in.R_ib = in.R_ib * lie::exp(h * in.omega_b);
+    in.p_i += h * in.v_i;
+    in.v_i += h * a_i;
+  }
+}
+
 TEST(AllocationFree, MissionStepOverTwoWaypoints) {
   // Table I of the waypoint paper with the improved choices of examples/waypoint_fine.toml.
   guidance::MissionParams p;
@@ -399,17 +414,7 @@ TEST(AllocationFree, MissionStepOverTwoWaypoints) {
   for (int k = 0; k < kCalls; ++k) {
     const guidance::MissionCommand cmd = counted([&] { return mission.step(in); });
     modes.insert(cmd.mode);
-    // Plant (2)-(5) of the waypoint paper, Lie-Euler, the commands held over dt.
-    constexpr int substeps = 10;
-    const double h = in.dt / substeps;
-    for (int s = 0; s < substeps; ++s) {
-      const Vec3 a_i = plant.acceleration_i(in.R_ib, cmd.inputs);
-      in.omega_b += h * plant.body().angular_acceleration(in.omega_b,
-                                                          plant.applied_torque(cmd.inputs.tau_b));
-      in.R_ib = in.R_ib * lie::exp(h * in.omega_b);
-      in.p_i += h * in.v_i;
-      in.v_i += h * a_i;
-    }
+    fly(plant, cmd, in);
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
                                      << " calls of Mission::step";
@@ -461,16 +466,7 @@ TEST(AllocationFree, MissionStepBrakingALateralAndRecedingStartWithShapedGains) 
     const guidance::MissionCommand cmd = counted([&] { return mission.step(in); });
     modes.insert(cmd.mode);
     if (cmd.transition) reasons.insert(cmd.reason);
-    constexpr int substeps = 10;
-    const double h = in.dt / substeps;
-    for (int s = 0; s < substeps; ++s) {
-      const Vec3 a_i = plant.acceleration_i(in.R_ib, cmd.inputs);
-      in.omega_b += h * plant.body().angular_acceleration(in.omega_b,
-                                                          plant.applied_torque(cmd.inputs.tau_b));
-      in.R_ib = in.R_ib * lie::exp(h * in.omega_b);
-      in.p_i += h * in.v_i;
-      in.v_i += h * a_i;
-    }
+    fly(plant, cmd, in);
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
                                      << " calls of Mission::step";

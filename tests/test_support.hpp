@@ -23,6 +23,9 @@ inline Eigen::Vector3d random_vector_in_ball(double r) {
   return v.normalized() * r * std::cbrt(u(rng()));
 }
 
+/// Uniformly distributed unit vector.
+inline Eigen::Vector3d random_unit() { return random_vector_in_ball(1.0).normalized(); }
+
 /// Uniformly distributed rotation (normalised Gaussian quaternion).
 inline Eigen::Matrix3d random_rotation() {
   std::normal_distribution<double> n(0.0, 1.0);

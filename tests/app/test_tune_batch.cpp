@@ -18,7 +18,7 @@
 namespace attiguard::app {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) {
+std::filesystem::path batch_scratch(const std::string& name) {
   return std::filesystem::temp_directory_path() /
          ("attiguard_tune_batch_" + name + "_" + std::to_string(::getpid()));
 }
@@ -70,12 +70,12 @@ TEST(TuneBatch, PointsComeBackInCandidateOrderWhateverTheThreads) {
   const scenario::Document doc = paper();
   const std::vector<TuneParameter> p{{"control.kp", 1.0, 10.0}, {"erg.kappa", 0.5, 5.0}};
   const std::vector<std::vector<double>> c{{5.0, 1.0}, {2.0, 0.5}, {1e300, 1.0}, {8.0, 3.0}, {3.0, 2.0}};
-  const auto one = evaluate_tune_batch(doc, p, c, 1, scratch("one"), {});
-  const auto three = evaluate_tune_batch(doc, p, c, 3, scratch("three"), {});
+  const auto one = evaluate_tune_batch(doc, p, c, 1, batch_scratch("one"), {});
+  const auto three = evaluate_tune_batch(doc, p, c, 3, batch_scratch("three"), {});
   ASSERT_EQ(one.size(), c.size());
   ASSERT_EQ(three.size(), c.size());
   for (std::size_t i = 0; i < c.size(); ++i) {
-    const TunePoint alone = evaluate_candidate(doc, p, c[i], scratch("alone"));
+    const TunePoint alone = evaluate_candidate(doc, p, c[i], batch_scratch("alone"));
     for (const auto* q : {&one[i], &three[i]}) {
       EXPECT_EQ(q->values, c[i]);
       EXPECT_EQ(q->status, alone.status);
@@ -92,7 +92,7 @@ TEST(TuneBatch, PointsComeBackInCandidateOrderWhateverTheThreads) {
 TEST(TuneBatch, AnEvaluationThatThrowsIsRaisedAfterTheBatch) {
   const scenario::Document bad = scenario::parse_document("kind = \"no_such_kind\"\n", "bad.toml");
   try {
-    (void)evaluate_tune_batch(bad, {}, {{}, {}}, 2, scratch("bad"), {});
+    (void)evaluate_tune_batch(bad, {}, {{}, {}}, 2, batch_scratch("bad"), {});
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no_such_kind"), std::string::npos) << e.what();

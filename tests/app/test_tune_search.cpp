@@ -16,7 +16,7 @@
 namespace attiguard::app {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) {
+std::filesystem::path tune_scratch(const std::string& name) {
   return std::filesystem::temp_directory_path() /
          ("attiguard_tune_" + name + "_" + std::to_string(::getpid()));
 }
@@ -32,7 +32,7 @@ TuneSettings settings(std::vector<TuneParameter> p, long budget, int threads, co
   s.budget = budget;
   s.threads = threads;
   s.seed = 7;
-  s.scratch = scratch(name);
+  s.scratch = tune_scratch(name);
   return s;
 }
 

@@ -62,7 +62,8 @@ TEST(ViewPage, AFolderWithoutResultsOrTrajectoryIsInvalidInput) {
   EXPECT_THROW((void)view_data(empty), InputError);
   std::ofstream(empty / "summary.json") << R"({"kind": "pet_erg"})";
   EXPECT_THROW((void)view_data(empty), InputError);
-  EXPECT_THROW((void)write_view(empty, empty / "no_bundle.js"), InputError);
+  EXPECT_THROW((void)write_view(empty, "console.log(1);"), InputError);
+  EXPECT_THROW((void)read_viewer_bundle(empty / "no_bundle.js"), InputError);
   fs::remove_all(empty);
 }
 

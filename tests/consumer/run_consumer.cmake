@@ -74,6 +74,33 @@ else()
   message(FATAL_ERROR "run_consumer.cmake: MODE must be full or flight, not '${MODE}'")
 endif()
 
+# MODE=full: the installed program writes a working view.html with the viewer bundle it carries
+# (docs/viewer.md, "The bundle"): no node on PATH (no PATH at all), no ATTIGUARD_VIEWER_BUNDLE,
+# run from outside the source and build trees.
+if(MODE STREQUAL "full")
+  set(view_dir ${WORK_DIR}/view_run)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=ATTIGUARD_VIEWER_BUNDLE PATH=/nonexistent
+                          ${prefix}/bin/attiguard run ${SOURCE_DIR}/examples/rigid_body_pd.toml
+                          --out ${view_dir} --view
+                  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT EXISTS ${view_dir}/view.html)
+    message(FATAL_ERROR "consumer (full): the installed `attiguard run --view` failed (${rc}):\n"
+                        "${out}\n${err}")
+  endif()
+  # The bundle's first 100 characters (file(READ … LIMIT) may return one more than asked).
+  file(READ ${SOURCE_DIR}/viewer/dist/attiguard_viewer.js bundle_head LIMIT 200)
+  string(SUBSTRING "${bundle_head}" 0 100 bundle_head)
+  file(READ ${view_dir}/view.html page)
+  string(FIND "${page}" "${bundle_head}" at)
+  string(FIND "${page}" "id=\"attiguard-data\"" data_at)
+  if(at EQUAL -1 OR data_at EQUAL -1)
+    message(FATAL_ERROR "consumer (full): the installed program's view.html lacks the viewer "
+                        "bundle or the run's data")
+  endif()
+  message(STATUS "consumer (full): installed `attiguard run --view` without node: ok")
+endif()
+
 set(consumer_src ${CMAKE_CURRENT_LIST_DIR})
 run("configure the consumer" ${CMAKE_COMMAND} -S ${consumer_src} -B ${WORK_DIR}/consumer
     ${common} -DCMAKE_PREFIX_PATH=${prefix} ${consumer_options})

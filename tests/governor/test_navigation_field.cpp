@@ -26,7 +26,6 @@ Vec3 fd_gradient(F&& f, const Mat3& R, double h = 1e-6) {
   return g;
 }
 
-Vec3 random_unit() { return test::random_vector_in_ball(1.0).normalized(); }
 
 TEST(NavigationField, AttractiveFieldIsMinusTheGradientOfPa) {
   for (int i = 0; i < 200; ++i) {
@@ -40,7 +39,7 @@ TEST(NavigationField, AttractiveFieldIsMinusTheGradientOfPa) {
 
 TEST(NavigationField, ConstraintGradientMatchesFiniteDifferencesAndHasNormSinBeta) {
   for (int i = 0; i < 200; ++i) {
-    const ConeConstraint cone = keep_in_cone(random_unit(), random_unit(), 2.0);
+    const ConeConstraint cone = keep_in_cone(test::random_unit(), test::random_unit(), 2.0);
     const Mat3 R_g = test::random_rotation();
     const Vec3 fd = fd_gradient([&](const Mat3& R) { return cone_cosine(cone, R); }, R_g);
     const Vec3 g = constraint_gradient(cone, R_g);
@@ -55,7 +54,7 @@ TEST(NavigationField, RepulsiveGradientMatchesFiniteDifferences) {
   int active = 0;
   for (int i = 0; i < 2000 && active < 300; ++i) {
     const ConeConstraint cone =
-        keep_out_cone(random_unit(), random_unit(), 0.2 + u(test::rng()), 0.2, 0.3, 0.5 + u(test::rng()));
+        keep_out_cone(test::random_unit(), test::random_unit(), 0.2 + u(test::rng()), 0.2, 0.3, 0.5 + u(test::rng()));
     const Mat3 R_g = test::random_rotation();
     const double c = cone_cosine(cone, R_g);
     if (!(c > cone.delta + 1e-3 && c < cone.zeta)) {

@@ -17,13 +17,12 @@ namespace {
 using lie::Mat3;
 using lie::Vec3;
 
-Vec3 random_unit() { return test::random_vector_in_ball(1.0).normalized(); }
 
 TEST(ConeConstraint, KeepOutConeIsTheComplementOfAKeepInCone) {
   std::uniform_real_distribution<double> u(0.05, 1.5);
   for (int i = 0; i < 500; ++i) {
-    const Vec3 axis_b = random_unit();
-    const Vec3 sun_i = random_unit();
+    const Vec3 axis_b = test::random_unit();
+    const Vec3 sun_i = test::random_unit();
     const double alpha = u(test::rng());
     const ConeConstraint cone = keep_out_cone(axis_b, sun_i, alpha);
     const Mat3 R = test::random_rotation();
@@ -53,7 +52,7 @@ TEST(PointingThreshold, IsTheExactGeometricBound) {
   const double kp = 3.0;
   int tested = 0;
   for (int i = 0; i < 400; ++i) {
-    const ConeConstraint cone = keep_in_cone(random_unit(), random_unit(), angle(test::rng()));
+    const ConeConstraint cone = keep_in_cone(test::random_unit(), test::random_unit(), angle(test::rng()));
     const Mat3 R_g = test::random_rotation();
     const double gamma_g = pointing_threshold(cone, R_g, kp);
     if (pointing_margin(cone, R_g) <= 0.0) {
@@ -65,7 +64,7 @@ TEST(PointingThreshold, IsTheExactGeometricBound) {
     // Largest rotation angle allowed by V ≤ Γ_g (V ≥ k_p φ): 1 − cos θ_max = Γ_g / k_p.
     const double theta_max = std::acos(std::clamp(1.0 - gamma_g / kp, -1.0, 1.0));
     for (int s = 0; s < 200; ++s) {
-      const Vec3 axis = random_unit();
+      const Vec3 axis = test::random_unit();
       const double theta = theta_max * std::cbrt(unit(test::rng()));
       const Mat3 R = R_g * lie::exp(theta * axis);
       EXPECT_GE(pointing_margin(cone, R), -1e-12);

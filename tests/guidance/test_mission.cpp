@@ -34,7 +34,7 @@ sim::WaypointScenario short_leg_scenario() {
   return sc;
 }
 
-Vec3 fd_rate(Quat qm, const Quat& q, Quat qp, double h) {
+Vec3 mission_fd_rate(Quat qm, const Quat& q, Quat qp, double h) {
   if (qp.dot(q) < 0) qp = -qp;
   if (qm.dot(q) < 0) qm = -qm;
   return 2.0 * lie::quat_multiply(lie::quat_conjugate(q), (qp - qm) / (2.0 * h)).tail<3>();
@@ -63,9 +63,9 @@ FdStats check_feedforward(const sim::WaypointScenario& sc, bool antiparallel) {
     ASSERT_LT((d0.q_id - cmd.q_id).norm(), 1e-12);  // the mission used exactly this frame
     ASSERT_LT((d0.omega_d - cmd.omega_d_d).norm(), 1e-12);
     const std::array<std::pair<Vec3, Vec3>, 3> pairs{{
-        {d0.error.omega_e, fd_rate(dm.error.q_ie, d0.error.q_ie, dp.error.q_ie, h)},
-        {d0.velocity.omega_d, fd_rate(dm.velocity.q_ed, d0.velocity.q_ed, dp.velocity.q_ed, h)},
-        {d0.omega_d, fd_rate(dm.q_id, d0.q_id, dp.q_id, h)},
+        {d0.error.omega_e, mission_fd_rate(dm.error.q_ie, d0.error.q_ie, dp.error.q_ie, h)},
+        {d0.velocity.omega_d, mission_fd_rate(dm.velocity.q_ed, d0.velocity.q_ed, dp.velocity.q_ed, h)},
+        {d0.omega_d, mission_fd_rate(dm.q_id, d0.q_id, dp.q_id, h)},
     }};
     for (const auto& [ff, fd] : pairs) {
       const double err = (ff - fd).norm();

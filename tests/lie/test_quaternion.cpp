@@ -13,7 +13,7 @@ namespace {
 
 using test::random_rotation;
 using test::random_vector_in_ball;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 Quat random_quat() {
   Quat q = rotation_to_quat(random_rotation());

@@ -12,7 +12,7 @@ namespace {
 
 using test::random_rotation;
 using test::random_vector_in_ball;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 TEST(So3, HatIsCrossProductAndVeeInvertsIt) {
   for (int i = 0; i < 100; ++i) {

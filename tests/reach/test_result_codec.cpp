@@ -21,7 +21,7 @@ bool same_bits(const M& a, const M& b) {
          std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
 }
 
-ar::ReachResult pd_result() {
+ar::ReachResult codec_pd_result() {
   const ar::PdLoop loop(ar::Vec3(1.0, 2.0, 3.0).asDiagonal(), 2.0, 3.0,
                         attiguard::lie::exp(ar::Vec3(0.0, 0.0, 0.3)));
   const ar::InitialSet set{attiguard::lie::exp(ar::Vec3(0.1, -0.2, 0.05)), 0.03,
@@ -35,7 +35,7 @@ ar::ReachResult pd_result() {
 }  // namespace
 
 TEST(ReachResultCodec, RoundTripKeepsEveryBit) {
-  const ar::ReachResult r = pd_result();
+  const ar::ReachResult r = codec_pd_result();
   ASSERT_EQ(r.steps.size(), 5u);
   ASSERT_FALSE(r.steps.front().state_tube.empty());
   ASSERT_FALSE(r.steps.front().trials.empty());
@@ -86,7 +86,7 @@ TEST(ReachResultCodec, RoundTripKeepsEveryBit) {
 }
 
 TEST(ReachResultCodec, MalformedBytesAreANumericalErrorNotACrash) {
-  const std::string bytes = ar::encode_result(pd_result());
+  const std::string bytes = ar::encode_result(codec_pd_result());
   EXPECT_THROW((void)ar::decode_result(bytes.substr(0, bytes.size() / 2)), attiguard::NumericalError);
   EXPECT_THROW((void)ar::decode_result("not cbor"), attiguard::NumericalError);
 }

@@ -38,7 +38,7 @@ sim::PetErgScenario parse(const std::string& text) {
   return parse_pet_erg(parse_document(text, "robust.toml"));
 }
 
-std::string error_of(const std::string& text) {
+std::string robust_error_of(const std::string& text) {
   try {
     (void)parse(text);
   } catch (const InputError& e) {
@@ -79,40 +79,40 @@ TEST(RobustMarginSetup, TheExampleGetsReducedLimitsAndTightenedCones) {
 }
 
 TEST(RobustMarginSetup, RefusesScenariosWhoseBoundsLeaveNoAdmissibleSet) {
-  EXPECT_NE(error_of(robust_example("disturbance_bound = 0.003", "disturbance_bound = 0.03"))
+  EXPECT_NE(robust_error_of(robust_example("disturbance_bound = 0.003", "disturbance_bound = 0.03"))
                 .find("control.margins: no admissible set with robust margins: Gamma_min = "),
             std::string::npos);
   // a command error (here rate noise × k_d) that reaches the wheels' torque limits
-  EXPECT_NE(error_of(robust_example("rate_noise = 0.00002", "rate_noise = 0.05"))
+  EXPECT_NE(robust_error_of(robust_example("rate_noise = 0.00002", "rate_noise = 0.05"))
                 .find("no admissible set with robust margins: the command error bound"),
             std::string::npos);
   // a bias bound whose coupling k_p 2 sin(β/2) leaves no strict Lyapunov function
-  EXPECT_NE(error_of(robust_example("attitude_bias_bound = 0.0215", "attitude_bias_bound = 1.1"))
+  EXPECT_NE(robust_error_of(robust_example("attitude_bias_bound = 0.0215", "attitude_bias_bound = 1.1"))
                 .find("control.margins: robust margins: no strict Lyapunov function W = V - eps w^T J s for kp = 0.5, "
                       "kd = 6 and the inertia's lambda_max = 150.3 with the attitude bias coupling"),
             std::string::npos);
 }
 
 TEST(RobustMarginSetup, RefusesTargetsAndStartsOutsideTheRobustSet) {
-  EXPECT_NE(error_of(robust_example("angle_deg = 120.0", "angle_deg = 105.0"))
+  EXPECT_NE(robust_error_of(robust_example("angle_deg = 120.0", "angle_deg = 105.0"))
                 .find("desired.attitude: with robust margins this desired attitude lies in the widened repulsive band"),
             std::string::npos);
-  EXPECT_NE(error_of(robust_example("omega_b = [0.001, -0.001, 0.0005]", "omega_b = [0.02, -0.02, 0.01]"))
+  EXPECT_NE(robust_error_of(robust_example("omega_b = [0.001, -0.001, 0.0005]", "omega_b = [0.02, -0.02, 0.01]"))
                 .find("initial.omega_b: initial state not admissible with robust margins: W(0) + start allowance"),
             std::string::npos);
 }
 
 TEST(RobustMarginSetup, KeysOnlyWhereTheyMeanSomething) {
-  EXPECT_NE(error_of(robust_example("margins = \"robust\"", "margins = \"nominal\""))
+  EXPECT_NE(robust_error_of(robust_example("margins = \"robust\"", "margins = \"nominal\""))
                 .find("control.robust_reference_step: only with margins = \"robust\""),
             std::string::npos);
   // (robust margins without the flight loop: docs/errors.md, robust_without_flight_loop)
-  EXPECT_NE(error_of(robust_example("attitude_bias_bound = 0.0215", "attitude_bias_bound = 0.0001"))
+  EXPECT_NE(robust_error_of(robust_example("attitude_bias_bound = 0.0215", "attitude_bias_bound = 0.0001"))
                 .find("imperfections.attitude_bias_bound: below the norm of attitude_bias"),
             std::string::npos);
-  EXPECT_NE(error_of(robust_example("margins = \"robust\"", "margins = \"robustly\"")).find("control.margins"),
+  EXPECT_NE(robust_error_of(robust_example("margins = \"robust\"", "margins = \"robustly\"")).find("control.margins"),
             std::string::npos);
-  EXPECT_NE(error_of(robust_example("governor = \"pet\"", "governor = \"none\""))
+  EXPECT_NE(robust_error_of(robust_example("governor = \"pet\"", "governor = \"none\""))
                 .find("robust margins are margins of the governor"),
             std::string::npos);
 }

@@ -33,7 +33,7 @@ step = 0.01
 )";
 
 /// The InputError message of read_tune_table on kBase + `tune` ("" when accepted).
-std::string error_of(const std::string& tune) {
+std::string tune_error_of(const std::string& tune) {
   try {
     (void)read_tune_table(parse_document(kBase + tune, "t.toml"));
   } catch (const InputError& e) {
@@ -70,25 +70,25 @@ TEST(TuneTable, ReadsEveryKeyAndTheRangesInKeyOrder) {
 }
 
 TEST(TuneTable, BadValuesAreLocatedOneLineErrors) {
-  EXPECT_EQ(error_of("[tune]\nbudget = 3\n"), "t.toml:19:10: tune.budget: must be in [4, 9223372036854775807], got 3");
-  EXPECT_EQ(error_of("[tune]\nseed = -1\n"), "t.toml:19:8: tune.seed: must be in [0, 9223372036854775807], got -1");
-  EXPECT_EQ(error_of("[tune]\nbatch = 0\n"), "t.toml:19:9: tune.batch: must be in [1, 9223372036854775807], got 0");
-  EXPECT_EQ(error_of("[tune]\nplot = 1\n"), "t.toml:19:8: tune.plot: expected a boolean (true or false), got an integer");
-  EXPECT_EQ(error_of("[tune]\nbudgett = 40\n"),
+  EXPECT_EQ(tune_error_of("[tune]\nbudget = 3\n"), "t.toml:19:10: tune.budget: must be in [4, 9223372036854775807], got 3");
+  EXPECT_EQ(tune_error_of("[tune]\nseed = -1\n"), "t.toml:19:8: tune.seed: must be in [0, 9223372036854775807], got -1");
+  EXPECT_EQ(tune_error_of("[tune]\nbatch = 0\n"), "t.toml:19:9: tune.batch: must be in [1, 9223372036854775807], got 0");
+  EXPECT_EQ(tune_error_of("[tune]\nplot = 1\n"), "t.toml:19:8: tune.plot: expected a boolean (true or false), got an integer");
+  EXPECT_EQ(tune_error_of("[tune]\nbudgett = 40\n"),
             "t.toml:19:1: tune.budgett: unknown key 'budgett' (expected one of: batch, budget, plot, ranges, seed); "
             "did you mean 'budget'?");
-  EXPECT_EQ(error_of("[tune]\nranges = {}\n"),
+  EXPECT_EQ(tune_error_of("[tune]\nranges = {}\n"),
             "t.toml:19:10: tune.ranges: [tune] ranges must list at least one KEY = [MIN, MAX]");
-  EXPECT_EQ(error_of("[tune.ranges]\n\"control.kp\" = [10.0, 0.1]\n"),
+  EXPECT_EQ(tune_error_of("[tune.ranges]\n\"control.kp\" = [10.0, 0.1]\n"),
             "t.toml:19:16: tune.ranges.\"control.kp\": MIN 10 is above MAX 0.1 (expected 0 < MIN <= MAX)");
-  EXPECT_EQ(error_of("[tune.ranges]\n\"control.kp\" = [1, 2, 3]\n"),
+  EXPECT_EQ(tune_error_of("[tune.ranges]\n\"control.kp\" = [1, 2, 3]\n"),
             "t.toml:19:16: tune.ranges.\"control.kp\": expected [MIN, MAX] (2 numbers, 0 < MIN <= MAX), got 3 numbers");
-  EXPECT_EQ(error_of("[tune.ranges]\n\"control.kp\" = [0, 2]\n"),
+  EXPECT_EQ(tune_error_of("[tune.ranges]\n\"control.kp\" = [0, 2]\n"),
             "t.toml:19:17: tune.ranges.\"control.kp\"[0]: must be > 0, got 0");
-  EXPECT_EQ(error_of("[tune.ranges]\n\"body.inertia\" = [1, 2]\n"),
+  EXPECT_EQ(tune_error_of("[tune.ranges]\n\"body.inertia\" = [1, 2]\n"),
             "t.toml:19:18: tune.ranges.\"body.inertia\": cannot be tuned: the scenario's value at this key "
             "path is not a number");
-  EXPECT_EQ(error_of("[tune.ranges]\n\"initial.attitude.matrix.x\" = [1, 2]\n"),
+  EXPECT_EQ(tune_error_of("[tune.ranges]\n\"initial.attitude.matrix.x\" = [1, 2]\n"),
             "t.toml:19:31: tune.ranges.\"initial.attitude.matrix.x\": cannot be tuned: the scenario has no "
             "table to hold this key");
 }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "attiguard/campaign/csv_format.hpp"
@@ -243,18 +244,22 @@ std::string view_html(const json& data, std::string_view bundle) {
   return html;
 }
 
-fs::path write_view(const fs::path& dir, const fs::path& bundle_path) {
-  const auto bundle = slurp(bundle_path);
-  if (!bundle) {
-    throw InputError(bundle_path.string() + ": the viewer bundle is missing (build it: npm ci in "
-                                            "viewer/, then cmake --build; docs/viewer.md)");
+std::string read_viewer_bundle(const fs::path& bundle_path) {
+  auto bundle = slurp(bundle_path);
+  if (!bundle || bundle->empty()) {
+    throw InputError(bundle_path.string() + ": the viewer bundle cannot be read (unset "
+                     "ATTIGUARD_VIEWER_BUNDLE to use the one built into attiguard; docs/viewer.md)");
   }
+  return std::move(*bundle);
+}
+
+fs::path write_view(const fs::path& dir, std::string_view bundle) {
   const json data = view_data(dir);
   const fs::path out = dir / "view.html";
   {
     std::ofstream f(io::partial_path(out), std::ios::binary | std::ios::trunc);
     if (!f) throw InputError("cannot write " + out.string());
-    f << view_html(data, *bundle);
+    f << view_html(data, bundle);
     f.flush();
     if (!f) throw InputError("cannot write " + out.string() + ": write failed");
   }

@@ -2,7 +2,8 @@
 /// @file view_page.hpp
 /// The self-contained browser view of a result folder (docs/viewer.md): DIR/view.html holds the
 /// folder's figures and time series as JSON and the viewer's JavaScript bundle (three.js
-/// included, built from viewer/ by npm), so that it opens from file:// with no network.
+/// included; viewer/dist/attiguard_viewer.js, built from viewer/src by esbuild and kept in the
+/// repository), so that it opens from file:// with no network.
 
 #include <cstddef>
 #include <filesystem>
@@ -27,9 +28,12 @@ inline constexpr std::size_t kViewMaxRows = 2000;
 /// The HTML page of `data` with the JavaScript `bundle` inlined ("</" escaped in both).
 [[nodiscard]] std::string view_html(const nlohmann::json& data, std::string_view bundle);
 
-/// Writes DIR/view.html with the bundle read from `bundle_path`; returns its path. Throws
-/// InputError when the bundle is missing (the viewer was not built: docs/viewer.md).
-std::filesystem::path write_view(const std::filesystem::path& dir,
-                                 const std::filesystem::path& bundle_path);
+/// The text of a viewer bundle file (a developer's rebuild, docs/viewer.md "Rebuilding the
+/// bundle"). Throws InputError naming the file when it cannot be read or is empty.
+[[nodiscard]] std::string read_viewer_bundle(const std::filesystem::path& bundle_path);
+
+/// Writes DIR/view.html (through DIR/view.html.partial) with the JavaScript `bundle`; returns
+/// its path. Throws InputError when DIR holds no result or the file cannot be written.
+std::filesystem::path write_view(const std::filesystem::path& dir, std::string_view bundle);
 
 }  // namespace attiguard::app

@@ -9,23 +9,17 @@
 #include <system_error>
 
 #include "attiguard/app/view_page.hpp"
+#include "attiguard/cli/viewer_bundle.hpp"
 #include "attiguard/core/errors.hpp"
-
-#ifndef ATTIGUARD_VIEWER_BUNDLE_PATH
-#define ATTIGUARD_VIEWER_BUNDLE_PATH ""
-#endif
 
 namespace attiguard::cli {
 
-std::filesystem::path viewer_bundle_path() {
-  if (const char* env = std::getenv("ATTIGUARD_VIEWER_BUNDLE"); env != nullptr && *env != '\0') {
-    return env;
-  }
-  return ATTIGUARD_VIEWER_BUNDLE_PATH;
-}
-
 std::filesystem::path write_run_view(const std::filesystem::path& dir) {
-  return app::write_view(dir, viewer_bundle_path());
+  // A developer's own rebuild of viewer/src (docs/viewer.md, "Rebuilding the bundle").
+  if (const char* env = std::getenv("ATTIGUARD_VIEWER_BUNDLE"); env != nullptr && *env != '\0') {
+    return app::write_view(dir, app::read_viewer_bundle(env));
+  }
+  return app::write_view(dir, embedded_viewer_bundle());
 }
 
 void view_command(const std::filesystem::path& dir) {

@@ -7,11 +7,9 @@
 
 namespace attiguard::cli {
 
-/// The viewer bundle: $ATTIGUARD_VIEWER_BUNDLE when set, else the one built at configure time
-/// (ATTIGUARD_VIEWER_BUNDLE_PATH: BUILD/viewer/attiguard_viewer.js).
-[[nodiscard]] std::filesystem::path viewer_bundle_path();
-
-/// Writes DIR/view.html and returns its path (app::write_view). Throws InputError.
+/// Writes DIR/view.html and returns its path (app::write_view) with the bundle built into the
+/// program, or the file $ATTIGUARD_VIEWER_BUNDLE when that is set (docs/viewer.md). Throws
+/// InputError.
 std::filesystem::path write_run_view(const std::filesystem::path& dir);
 
 /// `attiguard view DIR`: writes DIR/view.html and prints its path and size.

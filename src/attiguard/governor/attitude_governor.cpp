@@ -1,6 +1,7 @@
 #include "attiguard/governor/attitude_governor.hpp"
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/finite.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -15,8 +16,6 @@
 namespace attiguard::governor {
 
 namespace {
-
-bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 
 void require(bool ok, const std::string& what) {
   if (!ok) {

@@ -13,17 +13,16 @@
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/control/pd_so3.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/finite.hpp"
 
 namespace attiguard::governor {
 
 namespace {
 
-void require(bool ok, const std::string& what) {
+/// Throws SetupError("robust margins: what") unless ok.
+void require_robust(bool ok, const std::string& what) {
   if (!ok) throw SetupError("robust margins: " + what);
 }
-
-bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
-bool non_negative_finite(double x) noexcept { return std::isfinite(x) && x >= 0.0; }
 
 /// Cells of the angle sweep of ultimate_level_bound, and its rounds of refinement.
 constexpr int kAngleCells = 4096;
@@ -122,22 +121,22 @@ double command_error_bound(const RobustMarginInputs& in) noexcept {
 }
 
 RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
-  require(positive_finite(in.kp) && positive_finite(in.kd), "kp and kd must be positive and finite");
-  require(positive_finite(in.control_period), "needs the flight loop: control_period > 0");
-  require(in.delay_periods == 0 || in.delay_periods == 1, "delay_periods must be 0 or 1");
+  require_robust(positive_finite(in.kp) && positive_finite(in.kd), "kp and kd must be positive and finite");
+  require_robust(positive_finite(in.control_period), "needs the flight loop: control_period > 0");
+  require_robust(in.delay_periods == 0 || in.delay_periods == 1, "delay_periods must be 0 or 1");
   for (const double x : {in.attitude_bias, in.attitude_noise, in.rate_error, in.quantisation_error, in.disturbance,
                          in.wheel_momentum_max}) {
-    require(non_negative_finite(x), "error bounds must be finite and non-negative");
+    require_robust(non_negative_finite(x), "error bounds must be finite and non-negative");
   }
-  require(positive_finite(in.applied_torque_max), "the applied torque bound must be positive");
-  require(std::isfinite(in.epsilon_gamma) && in.epsilon_gamma > 0.0 && in.epsilon_gamma < 2.0,
+  require_robust(positive_finite(in.applied_torque_max), "the applied torque bound must be positive");
+  require_robust(std::isfinite(in.epsilon_gamma) && in.epsilon_gamma > 0.0 && in.epsilon_gamma < 2.0,
           "epsilon_gamma must lie in (0, 2)");
-  require(positive_finite(in.gamma_top) && in.gamma_top <= in.kp * (2.0 - in.epsilon_gamma) * (1.0 + 1e-12),
+  require_robust(positive_finite(in.gamma_top) && in.gamma_top <= in.kp * (2.0 - in.epsilon_gamma) * (1.0 + 1e-12),
           "gamma_top must be positive and at most kp (2 - epsilon_gamma)");
   const Eigen::SelfAdjointEigenSolver<lie::Mat3> eig(in.J, Eigen::EigenvaluesOnly);
   const double lmin = eig.eigenvalues().minCoeff();
   const double lmax = eig.eigenvalues().maxCoeff();
-  require(positive_finite(lmin) && positive_finite(lmax), "the inertia must be positive definite");
+  require_robust(positive_finite(lmin) && positive_finite(lmax), "the inertia must be positive definite");
 
   RobustMargin m;
   const double kp = in.kp;
@@ -173,7 +172,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     m.max_reference_step = in.max_reference_step > 0.0
                                ? in.max_reference_step
                                : (m.disturbance + m.command_error + m.hold_error) / (4.0 * kp);
-    require(positive_finite(m.max_reference_step), "the reference step cap must be positive and finite");
+    require_robust(positive_finite(m.max_reference_step), "the reference step cap must be positive and finite");
     m.reference_lag_error = d * kp * m.max_reference_step;
   }
   m.torque_error = m.disturbance + m.command_error + m.hold_error + m.reference_lag_error;
@@ -209,7 +208,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     m.gamma_min = wbar * wbar * ultimate_level_bound(m.a, m.b, m.c, m.epsilon, 0.5 * lmax, kp / (2.0 - phi_top),
                                                      m.epsilon * lmax);
   }
-  require(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + four_digits(kp) +
+  require_robust(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + four_digits(kp) +
                                ", kd = " + four_digits(kd) + " and the inertia's lambda_max = " + four_digits(lmax) +
                                (bias_coupling > 0.0 ? " with the attitude bias coupling kp 2 sin(beta/2) = " +
                                                           four_digits(bias_coupling) + " N m (beta = " + four_digits(in.attitude_bias) +

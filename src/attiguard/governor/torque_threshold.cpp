@@ -1,6 +1,7 @@
 #include "attiguard/governor/torque_threshold.hpp"
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/finite.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,8 +26,6 @@ double objective_derivative(const TorqueThresholdInputs& in, double theta) noexc
   const double g = std::max(0.0, in.tau_max - in.kp * s);
   return in.kp * s - 2.0 * kinetic_weight(in) * in.kp * std::cos(theta) * g;
 }
-
-bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 
 /// A number in messages: %.6g.
 std::string format_value(double x) {

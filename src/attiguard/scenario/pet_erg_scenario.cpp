@@ -30,7 +30,6 @@ using governor::GovernorMode;
 using lie::Mat3;
 using lie::Vec3;
 
-std::string num(double x) { return detail::format_number(x); }
 
 
 /// Rejects a desired attitude that violates a cone or lies in a cone's repulsive band.
@@ -42,12 +41,12 @@ void check_desired(const TableReader& t, std::string_view key, const Mat3& R_d,
     const std::string which = "cones[" + std::to_string(i) + "]";
     if (c < cone.cos_theta_c) {
       t.fail(key, "desired attitude violates the pointing constraint " + which +
-                      " (a_c^T R_d a_b = " + num(c) + " < cos(theta_c) = " + num(cone.cos_theta_c) +
+                      " (a_c^T R_d a_b = " + detail::format_number(c) + " < cos(theta_c) = " + detail::format_number(cone.cos_theta_c) +
                       ")");
     }
     if (c < cone.zeta) {
       t.fail(key, "desired attitude lies in the repulsive band of " + which + " (a_c^T R_d a_b = " +
-                      num(c) + " < zeta = " + num(cone.zeta) +
+                      detail::format_number(c) + " < zeta = " + detail::format_number(cone.zeta) +
                       "): the governed reference cannot converge to it; move R_d or reduce "
                       "delta_offset/zeta_offset");
     }
@@ -82,7 +81,7 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
     governor::Waypoint w;
     w.t = e.number("t", NumberRule::non_negative());
     if (!waypoints.empty() && !(w.t > waypoints.back().t)) {
-      e.fail("t", "schedule times must increase strictly (previous t = " + num(waypoints.back().t) +
+      e.fail("t", "schedule times must increase strictly (previous t = " + detail::format_number(waypoints.back().t) +
                       ")");
     }
     w.R_d = e.rotation("attitude");
@@ -159,15 +158,15 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   s.seed = seed;
   if (s.attitude_error_bound() >= 0.5 * std::numbers::pi) {
     t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
-           "attitude bias + noise must stay below pi/2 rad, got " + num(s.attitude_error_bound()));
+           "attitude bias + noise must stay below pi/2 rad, got " + detail::format_number(s.attitude_error_bound()));
   }
   im.attitude_bias_bound = t.number_or("attitude_bias_bound", s.attitude_bias_b.norm(), NumberRule::non_negative());
   if (im.attitude_bias_bound < s.attitude_bias_b.norm()) {
-    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + num(s.attitude_bias_b.norm()) + " rad");
+    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(s.attitude_bias_b.norm()) + " rad");
   }
   im.rate_bias_bound = t.number_or("rate_bias_bound", s.rate_bias_b.norm(), NumberRule::non_negative());
   if (im.rate_bias_bound < s.rate_bias_b.norm()) {
-    t.fail("rate_bias_bound", "below the norm of rate_bias, " + num(s.rate_bias_b.norm()) + " rad/s");
+    t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(s.rate_bias_b.norm()) + " rad/s");
   }
   im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
   im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
@@ -186,7 +185,7 @@ void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
     w.momentum_max = e.number("momentum_max", NumberRule::positive());
     w.momentum0 = e.number_or("momentum", 0.0, NumberRule{});
     if (std::abs(w.momentum0) > w.momentum_max) {
-      e.fail("momentum", "initial wheel momentum exceeds momentum_max = " + num(w.momentum_max));
+      e.fail("momentum", "initial wheel momentum exceeds momentum_max = " + detail::format_number(w.momentum_max));
     }
     sc.wheels.push_back(w);
   }
@@ -318,9 +317,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   const double V0 = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
   const double G0 = gov.gamma(sc.R_g0);
   if (V0 > G0) {
-    fail_initial("omega_b", "initial state not admissible: V(0) = " + num(V0) +
-                                " > Gamma(R_g(0)) = " + num(G0) + " (Gamma_d = " +
-                                num(gov.gamma_d()) + ", Gamma_g = " + num(gov.gamma_g(sc.R_g0)) +
+    fail_initial("omega_b", "initial state not admissible: V(0) = " + detail::format_number(V0) +
+                                " > Gamma(R_g(0)) = " + detail::format_number(G0) + " (Gamma_d = " +
+                                detail::format_number(gov.gamma_d()) + ", Gamma_g = " + detail::format_number(gov.gamma_g(sc.R_g0)) +
                                 ")");
   }
   return sc;

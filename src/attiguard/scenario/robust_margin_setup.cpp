@@ -19,13 +19,12 @@ namespace attiguard::scenario {
 
 namespace {
 
-std::string num(double x) { return detail::format_number(x); }
 
 /// "w = … N m (disturbance …, sensors …, quantisation …, hold …, reference lag …)".
 std::string budget(const governor::RobustMargin& m) {
-  return "torque error bound w = " + num(m.torque_error) + " N m (disturbance " + num(m.disturbance) +
-         ", sensors " + num(m.sensor_error) + ", quantisation " + num(m.quantisation_error) +
-         ", hold " + num(m.hold_error) + ", reference lag " + num(m.reference_lag_error) + ")";
+  return "torque error bound w = " + detail::format_number(m.torque_error) + " N m (disturbance " + detail::format_number(m.disturbance) +
+         ", sensors " + detail::format_number(m.sensor_error) + ", quantisation " + detail::format_number(m.quantisation_error) +
+         ", hold " + detail::format_number(m.hold_error) + ", reference lag " + detail::format_number(m.reference_lag_error) + ")";
 }
 
 /// The bounds of the flight loop, [imperfections] and [[wheels]] (section 13, "Assumptions").
@@ -75,8 +74,8 @@ std::vector<governor::ConeConstraint> robust_cones(const TableReader& control, c
                                                    double bias, const sim::PetErgScenario& sc) {
   const double ratio = 1.05 * m.gamma_min / ((1.0 - m.delta) * sc.params.gains.kp);
   if (!(ratio < 2.0)) {
-    control.fail("margins", "no admissible set with robust margins: Gamma_min = " + num(m.gamma_min) +
-                                " leaves no attitude inside any cone (kp = " + num(sc.params.gains.kp) + ")");
+    control.fail("margins", "no admissible set with robust margins: Gamma_min = " + detail::format_number(m.gamma_min) +
+                                " leaves no attitude inside any cone (kp = " + detail::format_number(sc.params.gains.kp) + ")");
   }
   const double gap = std::acos(1.0 - ratio);
   std::vector<governor::ConeConstraint> cones = sc.cones;
@@ -85,10 +84,10 @@ std::vector<governor::ConeConstraint> robust_cones(const TableReader& control, c
     const double theta_c = cone.theta_c - bias;
     if (!(gap < theta_c)) {
       control.fail("margins", "no admissible set with robust margins: cones[" + std::to_string(i) +
-                                  "] (theta_c = " + num(cone.theta_c * 180.0 / std::numbers::pi) +
-                                  " deg, less the attitude bias bound " + num(bias * 180.0 / std::numbers::pi) +
-                                  " deg) leaves no attitude " + num(gap * 180.0 / std::numbers::pi) +
-                                  " deg inside it, as Gamma_min = " + num(m.gamma_min) + " needs");
+                                  "] (theta_c = " + detail::format_number(cone.theta_c * 180.0 / std::numbers::pi) +
+                                  " deg, less the attitude bias bound " + detail::format_number(bias * 180.0 / std::numbers::pi) +
+                                  " deg) leaves no attitude " + detail::format_number(gap * 180.0 / std::numbers::pi) +
+                                  " deg inside it, as Gamma_min = " + detail::format_number(m.gamma_min) + " needs");
     }
     const double delta_offset = cone.delta - cone.cos_theta_c;
     const double band = cone.zeta - cone.delta;
@@ -100,7 +99,7 @@ std::vector<governor::ConeConstraint> robust_cones(const TableReader& control, c
     if (!(cone.zeta < 1.0)) {
       control.fail("margins", "no admissible set with robust margins: the repulsive band of cones[" +
                                   std::to_string(i) + "] moved inwards by the robust gap " +
-                                  num(gap * 180.0 / std::numbers::pi) + " deg leaves no attitude outside it");
+                                  detail::format_number(gap * 180.0 / std::numbers::pi) + " deg leaves no attitude outside it");
     }
   }
   return cones;
@@ -124,8 +123,8 @@ void set_robust_margins(const TableReader& control, sim::PetErgScenario& sc) {
   // them for the command (sensors, quantisation) to stay within the real ones.
   sc.robust_tau_max = sc.params.tau_max - e_cmd;
   if (!(sc.robust_tau_max > 0.0)) {
-    no_set("the command error bound " + num(e_cmd) + " N m (kp sigma_R + kd sigma_omega + quantisation) is not below tau_max = " +
-           num(sc.params.tau_max));
+    no_set("the command error bound " + detail::format_number(e_cmd) + " N m (kp sigma_R + kd sigma_omega + quantisation) is not below tau_max = " +
+           detail::format_number(sc.params.tau_max));
   }
   const double lambda_min =
       Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.params.J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
@@ -140,8 +139,8 @@ void set_robust_margins(const TableReader& control, sim::PetErgScenario& sc) {
         rows.push_back(array.allocation_row(i));
         limits.push_back(array.wheel(i).torque_max - array.allocation_row(i).norm() * e_cmd);
         if (!(limits.back() > 0.0)) {
-          no_set("the command error bound " + num(e_cmd) + " N m reaches wheel " + std::to_string(i) +
-                 "'s torque limit " + num(array.wheel(i).torque_max) + " N m");
+          no_set("the command error bound " + detail::format_number(e_cmd) + " N m reaches wheel " + std::to_string(i) +
+                 "'s torque limit " + detail::format_number(array.wheel(i).torque_max) + " N m");
         }
       }
       sc.robust_polytope_gamma_d =
@@ -159,9 +158,9 @@ void set_robust_margins(const TableReader& control, sim::PetErgScenario& sc) {
     control.fail("margins", e.what());
   }
   if (!((1.0 - m.delta) * in.gamma_top > m.gamma_min)) {
-    no_set("Gamma_min = " + num(m.gamma_min) + " of the " + budget(m) +
-           " is not below (1 - delta) Gamma_d' = " + num((1.0 - m.delta) * in.gamma_top) +
-           " (Gamma_d' = " + num(in.gamma_top) +
+    no_set("Gamma_min = " + detail::format_number(m.gamma_min) + " of the " + budget(m) +
+           " is not below (1 - delta) Gamma_d' = " + detail::format_number((1.0 - m.delta) * in.gamma_top) +
+           " (Gamma_d' = " + detail::format_number(in.gamma_top) +
            " with the reduced torque limits): reduce the imperfections, the control period or "
            "raise kp, kd");
   }
@@ -179,16 +178,16 @@ void check_robust_desired(const TableReader& desired, const governor::AttitudeGo
       const double cosine = governor::cone_cosine(sc.robust_cones[c], R_d);
       if (cosine < sc.robust_cones[c].zeta) {
         desired.fail(key, "with robust margins this desired attitude lies in the widened repulsive band of cones[" +
-                              std::to_string(c) + "] (a_c^T R_d a_b = " + num(cosine) + " < zeta = " +
-                              num(sc.robust_cones[c].zeta) + ", Gamma_min = " + num(m.gamma_min) +
+                              std::to_string(c) + "] (a_c^T R_d a_b = " + detail::format_number(cosine) + " < zeta = " +
+                              detail::format_number(sc.robust_cones[c].zeta) + ", Gamma_min = " + detail::format_number(m.gamma_min) +
                               "): move R_d away from the cone or reduce the imperfections");
       }
     }
     const double G = gov.gamma(R_d);
     if (!(G > m.gamma_min)) {
       desired.fail(key, "with robust margins the reference can never reach this desired attitude: "
-                        "Gamma_W(R_d) = " + num(G) + " (Gamma_g = " + num(gov.gamma_g(R_d)) +
-                        ") is not above Gamma_min = " + num(m.gamma_min) +
+                        "Gamma_W(R_d) = " + detail::format_number(G) + " (Gamma_g = " + detail::format_number(gov.gamma_g(R_d)) +
+                        ") is not above Gamma_min = " + detail::format_number(m.gamma_min) +
                         ": move R_d away from the cones or reduce the imperfections");
     }
   }
@@ -201,8 +200,8 @@ std::string robust_initial_problem(const governor::AttitudeGovernor& gov, const 
   const lie::Mat3 R0_seen = sc.R0_ib * lie::exp(sc.imperfections.sensor.attitude_bias_b);
   const double W0 = gov.level(R0_seen, sc.omega0_b, sc.R_g0) + m.start_allowance;
   if (G0 > m.gamma_min && W0 <= G0) return {};
-  return "initial state not admissible with robust margins: W(0) + start allowance = " + num(W0) +
-         ", Gamma_W(R_g(0)) = " + num(G0) + ", Gamma_min = " + num(m.gamma_min) +
+  return "initial state not admissible with robust margins: W(0) + start allowance = " + detail::format_number(W0) +
+         ", Gamma_W(R_g(0)) = " + detail::format_number(G0) + ", Gamma_min = " + detail::format_number(m.gamma_min) +
          " (needs Gamma_min < Gamma_W(R_g(0)) and W(0) + allowance <= Gamma_W(R_g(0)))";
 }
 

@@ -22,7 +22,6 @@ namespace attiguard::scenario {
 
 namespace {
 
-std::string num(double x) { return detail::format_number(x); }
 
 constexpr double kPi = 3.14159265358979323846;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
@@ -54,8 +53,8 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     const double tilt_deg =
         std::acos(std::clamp(sc.main_thrust_axis_b.x(), -1.0, 1.0)) * 180.0 / kPi;
     if (tilt_deg > kMaxThrustTiltDeg) {
-      craft.fail("main_thrust_axis_b", "the main engine axis is " + num(tilt_deg) +
-                                           " deg from body x; at most " + num(kMaxThrustTiltDeg) +
+      craft.fail("main_thrust_axis_b", "the main engine axis is " + detail::format_number(tilt_deg) +
+                                           " deg from body x; at most " + detail::format_number(kMaxThrustTiltDeg) +
                                            " deg of misalignment is supported");
     }
   }
@@ -174,14 +173,14 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
       NumberRule::non_negative());
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",
-           "replan_distance (" + num(mp.replan_distance) + ") must exceed arrival_radius (" +
-               num(mp.arrival_radius) + ")");
+           "replan_distance (" + detail::format_number(mp.replan_distance) + ") must exceed arrival_radius (" +
+               detail::format_number(mp.arrival_radius) + ")");
   }
   if (mp.rct.kappa_p > 0.0 && mp.position_accuracy >= mp.replan_distance) {
-    g.fail("position_accuracy", "must be < replan_distance (" + num(mp.replan_distance) + ")");
+    g.fail("position_accuracy", "must be < replan_distance (" + detail::format_number(mp.replan_distance) + ")");
   }
   if (mp.main_cutoff_speed >= mp.cruise_speed) {
-    g.fail("main_cutoff_speed", "must be < cruise_speed (" + num(mp.cruise_speed) + ")");
+    g.fail("main_cutoff_speed", "must be < cruise_speed (" + detail::format_number(mp.cruise_speed) + ")");
   }
 
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
@@ -190,11 +189,11 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
   sc.integrator = parse_integrator_settings(sim);
   if (sc.control_period > sc.duration) {
-    sim.fail("control_period", "must be <= duration (" + num(sc.duration) + ")");
+    sim.fail("control_period", "must be <= duration (" + detail::format_number(sc.duration) + ")");
   }
   if (sc.output_interval < sc.control_period) {
     sim.fail("output_interval",
-             "must be >= control_period (" + num(sc.control_period) + "): rows are logged at "
+             "must be >= control_period (" + detail::format_number(sc.control_period) + "): rows are logged at "
              "control samples");
   }
   require_countable(sim, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
@@ -256,8 +255,8 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
     if (t_min + t_flips > sc.duration) {
       wps[k].fail("position",
                   "waypoint " + std::to_string(k) + " is unreachable within simulation.duration (" +
-                      num(sc.duration) + " s): even bang-bang at T_max/m = " + num(a_max) +
-                      " m/s^2 needs " + num(t_min) + " s to get there" +
+                      detail::format_number(sc.duration) + " s): even bang-bang at T_max/m = " + detail::format_number(a_max) +
+                      " m/s^2 needs " + detail::format_number(t_min) + " s to get there" +
                       (t_flips > 0.0 ? " plus " + four_digits(t_flips) + " s of flips at max_wheel_torque " +
                                            four_digits(sc.max_wheel_torque) + " N m"
                                      : std::string()));

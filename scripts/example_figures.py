@@ -11,6 +11,11 @@ the exit code exactly; a campaign example (with [dispersions]) is compared throu
 of its dispersed run REPLAY_RUN (`attiguard campaign FILE --replay K`); a figure missing from either side is a failure. Machine-dependent fields
 (wall times, thread counts, output paths) are left out (MACHINE_DEPENDENT below).
 
+Compare also checks the stdout of the command: exactly one line that starts with "outcome: "
+(docs/conventions.md, "Outcome line"), followed by "Wrote:" and the paths written. For a
+campaign example it also runs a small campaign (CAMPAIGN_RUNS runs), and for a pet_erg example a
+small `attiguard tune` (TUNE_BUDGET points), and checks their stdout the same way.
+
 Capture (rewrites the committed figures; run it only when a change of the figures is intended,
 e.g. after a change to ConReach's bounds, and commit the result):
 
@@ -42,6 +47,10 @@ MACHINE_DEPENDENT = {"wall_time_s", "threads", "ranks", "out_dir", "path"}
 # Campaign examples (with [dispersions]) are compared through `attiguard campaign --replay K`:
 # the summary of their dispersed run K.
 REPLAY_RUN = 1
+
+# The small campaign and tune whose stdout compare checks.
+CAMPAIGN_RUNS = 3
+TUNE_BUDGET = 4
 
 REL_TOL = 1e-12
 ABS_FLOOR = 1e-300
@@ -76,8 +85,31 @@ def flatten(value, prefix: str, out: dict) -> None:
         out[prefix] = value
 
 
+def outcome_problems(command: str, stdout: str) -> list[str]:
+    """What is wrong with a command's stdout: one "outcome: " line, then "Wrote:" (empty: fine)."""
+    lines = stdout.splitlines()
+    at = [i for i, line in enumerate(lines) if line.startswith("outcome: ")]
+    if len(at) != 1:
+        return [f"{command}: {len(at)} 'outcome: ' lines on stdout (expected 1):\n{stdout}"]
+    i = at[0]
+    if i + 1 >= len(lines) or lines[i + 1] != "Wrote:" or i + 2 >= len(lines):
+        return [f"{command}: the outcome line is not followed by 'Wrote:' and paths:\n{stdout}"]
+    return []
+
+
+def side_commands(example: pathlib.Path, tmp: str) -> list[list[str]]:
+    """The campaign and tune runs of an example whose stdout compare checks besides its own."""
+    if is_campaign(example):
+        return [["campaign", str(example), "--runs", str(CAMPAIGN_RUNS), "--threads", "2",
+                 "--out", tmp]]
+    if example_kind(example) == "pet_erg":
+        return [["tune", str(example), "--budget", str(TUNE_BUDGET), "--threads", "2", "--no-plot",
+                 "--out", tmp]]
+    return []
+
+
 def run_example(cli: str, example: pathlib.Path) -> dict:
-    """Runs one example; returns {"exit_code": N, "figures": {path: value}}."""
+    """Runs one example; returns {"exit_code": N, "figures": {path: value}, "stdout": text}."""
     kind = example_kind(example)
     with tempfile.TemporaryDirectory(prefix="attiguard_figures_") as tmp:
         out = pathlib.Path(tmp)
@@ -95,7 +127,8 @@ def run_example(cli: str, example: pathlib.Path) -> dict:
                              f"stderr: {proc.stderr.strip()}")
         figures: dict = {}
         flatten(json.loads(summary_file.read_text()), "", figures)
-    return {"exit_code": proc.returncode, "figures": figures}
+    return {"exit_code": proc.returncode, "figures": figures, "stdout": proc.stdout,
+            "command": " ".join(args[:2])}
 
 
 def same(expected, got) -> bool:
@@ -123,6 +156,13 @@ def compare(cli: str, name: str) -> int:
     for key in sorted(set(expected) & set(got)):
         if not same(expected[key], got[key]):
             problems.append(f"{key}: {got[key]!r} != expected {expected[key]!r}")
+    problems += outcome_problems(result["command"], result["stdout"])
+    with tempfile.TemporaryDirectory(prefix="attiguard_outcome_") as tmp:
+        for args in side_commands(example, tmp):
+            proc = subprocess.run([cli, *args], cwd=ROOT, stdout=subprocess.PIPE,
+                                  stderr=subprocess.PIPE, text=True, check=False)
+            problems += outcome_problems(" ".join(args[:2]) + f" (exit {proc.returncode})",
+                                         proc.stdout)
     for p in problems:
         print(f"{name}: {p}")
     print(f"{name}: {len(expected)} figures, {len(problems)} differences")
@@ -134,6 +174,7 @@ def capture(cli: str, names: list[str]) -> int:
     chosen = [EXAMPLES / f"{n}.toml" for n in names] if names else examples()
     for example in chosen:
         result = run_example(cli, example)
+        result = {"exit_code": result["exit_code"], "figures": result["figures"]}
         (FIGURES / f"{example.stem}.json").write_text(json.dumps(result, indent=1, sort_keys=True)
                                                      + "\n")
         print(f"{example.stem}: {len(result['figures'])} figures, exit {result['exit_code']}")

@@ -61,8 +61,10 @@ TEST(CampaignCli, CountsEachOutcomeAndStatesTheCountOfTheConvergenceStatistics) 
   EXPECT_EQ(converged + stalled, j["ok"].get<long>());
   EXPECT_EQ(j["figures"]["convergence_time"]["count"].get<long>(), converged);
   EXPECT_EQ(j["figures"]["min_pointing_margin"]["count"].get<long>(), j["ok"].get<long>());
-  EXPECT_NE(r.out.find("Outcomes of the 40 ok runs: " + std::to_string(converged) + " converged, " +
-                       std::to_string(stalled) + " stalled"),
+  EXPECT_NE(r.out.find("\noutcome: done (40 of 40 runs); 40 ok, 0 rejected, 0 failed; outcomes: " +
+                       std::to_string(converged) + " converged, " + std::to_string(stalled) +
+                       " stalled; 0 runs with a constraint violation; convergence_time over " +
+                       std::to_string(converged) + " runs: min "),
             std::string::npos)
       << r.out;
   const std::string header = read_file(dir / "runs.csv").substr(0, read_file(dir / "runs.csv").find('\n'));

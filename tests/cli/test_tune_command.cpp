@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "attiguard/core/four_digits.hpp"
+
 #include "cli_runner.hpp"
 
 namespace attiguard {
@@ -27,7 +29,11 @@ TEST(TuneCli, WritesTheBestGainsAndBestTomlRunsToTheSameConvergenceTime) {
   EXPECT_EQ(j["outcome"], "found");
   EXPECT_EQ(j["evaluated"], 12);
   ASSERT_TRUE(j["best"].is_object());
-  EXPECT_NE(r.out.find("convergence_time: "), std::string::npos);
+  EXPECT_NE(r.out.find("\noutcome: found ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" points admissible); "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; best " + four_digits(j["convergence_time"].get<double>()) + " s = "),
+            std::string::npos)
+      << r.out;
   // best.toml is a valid scenario whose run converges at the best point's time.
   const auto run = test::run_cli("run '" + (dir / "best.toml").string() + "' --out '" + (dir / "run").string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "attiguard/app/outcome_line.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/scenario/mission_scenario.hpp"
@@ -87,23 +88,26 @@ nlohmann::json run_reach(const Document& doc, const RunOptions&) {
 constexpr std::array<KindHandler, 5> registry{{
     {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
      &check_kind<&scenario::parse_rigid_body>,
-     &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>},
+     &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>,
+     &rigid_body_outcome_line},
     {"pet_erg",
      "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
      &check_kind<&scenario::parse_pet_erg>,
-     &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>},
+     &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>,
+     &pet_erg_outcome_line},
     {"waypoint",
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",
      &check_kind<&scenario::parse_waypoint>,
-     &run_kind<&scenario::parse_waypoint, &sim::record_waypoint, &sim::waypoint_summary>},
+     &run_kind<&scenario::parse_waypoint, &sim::record_waypoint, &sim::waypoint_summary>,
+     &waypoint_outcome_line},
     {"mission",
      "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
      "slews; also flies the unconstrained twin",
-     &check_kind<&scenario::parse_mission>, &run_mission},
+     &check_kind<&scenario::parse_mission>, &run_mission, &mission_outcome_line},
     {"reach",
      "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
-     &check_kind<&scenario::parse_reach>, &run_reach},
+     &check_kind<&scenario::parse_reach>, &run_reach, &reach_outcome_line},
 }};
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
@@ -35,6 +36,9 @@ struct KindHandler {
   /// options.write_files, and returns the summary. Throws InputError / NumericalError /
   /// VerificationFailure.
   nlohmann::json (*run)(const scenario::Document& doc, const RunOptions& options);
+  /// The one-line outcome of the summary `run` returned (app/outcome_line.hpp; for kind reach,
+  /// of reach.json).
+  std::string (*outcome_line)(const nlohmann::json& summary);
 };
 
 /// Every registered kind.

@@ -26,6 +26,7 @@
 #include "attiguard/campaign/row_gather.hpp"
 #include "attiguard/campaign/progress.hpp"
 #include "attiguard/app/campaign_runner.hpp"
+#include "attiguard/app/outcome_line.hpp"
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/export_aem_command.hpp"
@@ -69,13 +70,17 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
   std::ofstream(dir / "run.csv", std::ios::binary) << header << '\n' << row << '\n';
-  std::cout << "Replayed run " << k << " (seed " << r.seed << "): " << app::status_name(r.status)
-            << (r.reason.empty() ? "" : " (" + r.reason + ")") << '\n';
+  // The one-line outcome of the replayed run (docs/conventions.md, "Outcome line"): the kind's
+  // line, or its status and reason; whether it reproduces its row of runs.csv.
+  std::string line = r.status == app::RunStatus::ok
+                         ? c.handler->outcome_line(r.summary)
+                         : std::string("outcome: ") + app::status_name(r.status) + " (" + r.reason + ")";
+  line += "; run " + std::to_string(k) + ", seed " + std::to_string(r.seed);
   const auto existing = campaign::read_runs(args.out_dir / "runs.csv", header);
   if (const auto it = existing.find(k); it != existing.end()) {
-    std::cout << (it->second == row ? "  identical to its row in runs.csv\n"
-                                    : "  DIFFERS from its row in runs.csv\n");
+    line += it->second == row ? "; identical to its row in runs.csv" : "; DIFFERS from its row in runs.csv";
   }
+  std::cout << line << '\n';
   std::cout << "Wrote:\n  " << (dir / "run.csv").string() << '\n';
   for (const char* f : {"trajectory.csv", "summary.json"}) {
     if (std::filesystem::exists(dir / f)) std::cout << "  " << (dir / f).string() << '\n';
@@ -207,20 +212,15 @@ void campaign_command(const CampaignArguments& args) {
   }
   std::filesystem::remove(args.out_dir / ".scratch", ec);
 
+  // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
+  std::cout << app::campaign_outcome_line(summary) << '\n';
   if (g_stop.load()) {
-    std::cout << "Interrupted: " << done.size() << " of " << args.runs
+    std::cout << "Interrupted after " << wall << " s: " << done.size() << " of " << args.runs
               << " runs kept in " << runs_path.string() << "; continue with --resume\n"
               << std::flush;
     std::signal(SIGINT, SIG_DFL);
     std::raise(SIGINT);
     return;
-  }
-  std::cout << "Done in " << wall << " s: " << summary["ok"] << " ok, " << summary["rejected"]
-            << " rejected, " << summary["failures"] << " failed, " << summary["violations"]
-            << " with a constraint violation\n";
-  if (summary.contains("outcomes")) {
-    std::cout << "Outcomes of the " << summary["ok"] << " ok runs: "
-              << campaign::outcome_counts_text(summary["outcomes"]) << '\n';
   }
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
             << (args.out_dir / "campaign.json").string() << '\n';

@@ -3,8 +3,10 @@
 
 #include "attiguard/cli/reach_command.hpp"
 
-#include <cstdio>
+#include <exception>
+#include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,7 @@
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
+#include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/reach_run.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
@@ -21,6 +24,17 @@
 #include "attiguard/scenario/reach_scenario.hpp"
 
 namespace attiguard::cli {
+namespace {
+
+/// reach.json as run_reach wrote it before reporting an unproved verdict.
+nlohmann::json read_reach_json(const std::filesystem::path& path) {
+  std::ifstream f(path, std::ios::binary);
+  nlohmann::json j = nlohmann::json::parse(f, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) throw std::runtime_error(path.string() + ": cannot read the reach.json just written");
+  return j;
+}
+
+}  // namespace
 
 void reach_command(const ReachArguments& args) {
   const scenario::Document doc = scenario::load_document(args.scenario);
@@ -38,12 +52,15 @@ void reach_command(const ReachArguments& args) {
     io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
                    scenario::resolve_scenario(doc, [](const scenario::Document& d) { (void)scenario::parse_reach(d); }));
   }
+  // A safety verification that fails (exit 4) still has its reach.json, its outcome line, its
+  // plots and view; the failure is rethrown after them.
+  std::exception_ptr unproved;
   try {
     summary = app::run_reach(sc, args.out_dir, world);
   } catch (const VerificationFailure&) {
-    if (args.plot && world.root()) io::record_plots(args.out_dir, plot_results("reach", args.out_dir).written);
-    if (args.view && world.root()) (void)write_run_view(args.out_dir);
-    throw;
+    if (!world.root()) throw;
+    unproved = std::current_exception();
+    summary = read_reach_json(args.out_dir / "reach.json");
   } catch (const Error& e) {  // no reach.json: reach.json.partial says why
     if (world.root()) {
       io::write_failure_status(args.out_dir, "reach.json", "reach", args.scenario.string(),
@@ -52,19 +69,8 @@ void reach_command(const ReachArguments& args) {
     throw;
   }
   if (!world.root()) return;
-  const auto& steps = summary["steps"];
-  const auto& last = steps.back();
-  char buf[256];
-  std::cout << "Reach " << sc.name << " (" << sc.model << ", " << summary["rate_mode"].get<std::string>()
-            << ", " << summary["cells"].get<long>() << " cell(s) on " << world.size << " rank(s)) in "
-            << summary["wall_time_s"].get<double>() << " s\n";
-  std::snprintf(buf, sizeof buf, "  final ball: r = %.6g, attitude within %.6g rad, c_N = %.4g\n",
-                last["r"].get<double>(), last["attitude_radius"].get<double>(), last["c"].get<double>());
-  std::cout << buf;
-  std::cout << "  sdp_solves: " << summary["sdp_solves"].get<long>() << '\n';
-  std::cout << "  soundness: " << summary["soundness"]["inside"].get<long>() << "/"
-            << summary["soundness"]["samples"].get<long>() << " sampled trajectories inside\n";
-  std::cout << "  verdict: " << summary["verdict"].get<std::string>() << '\n';
+  // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
+  std::cout << app::reach_outcome_line(summary) << '\n';
   std::cout << "Wrote:\n  " << (args.out_dir / "reach.json").string() << "\n  "
             << (args.out_dir / scenario::kResolvedScenarioFile).string() << '\n';
   if (args.plot) {
@@ -74,6 +80,8 @@ void reach_command(const ReachArguments& args) {
     if (plots.skipped_because) std::cerr << "attiguard: warning: no plots: " << *plots.skipped_because << '\n';
   }
   if (args.view) std::cout << "  " << write_run_view(args.out_dir).string() << '\n';
+  std::cout.flush();
+  if (unproved) std::rethrow_exception(unproved);
 }
 
 }  // namespace attiguard::cli

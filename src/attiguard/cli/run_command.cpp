@@ -1,11 +1,8 @@
 /// @file run_command.cpp
 /// `attiguard run SCENARIO --out DIR [--plot]`.
 
-#include <array>
-#include <cstdio>
 #include <iostream>
 #include <string>
-#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -24,35 +21,6 @@
 namespace attiguard::cli {
 namespace {
 
-/// The figures of summary.json shown after a run, in this order, when present. Scenario kinds
-/// whose summary has none of them get their first kMaxFigures scalar fields instead; everything
-/// is in summary.json anyway.
-constexpr std::array<std::string_view, 9> kHeadlineKeys{
-    "law",                      // rigid_body
-    "integrator",
-    "duration",
-    "steps",
-    "final_attitude_error_rad",
-    "final_omega_norm",
-    "max_torque_norm",
-    "max_energy_drift_rel",
-    "max_momentum_drift_rel",
-};
-
-/// How many scalar figures are shown at most when none of kHeadlineKeys is present.
-constexpr std::size_t kMaxFigures = 10;
-
-/// A scalar JSON value for humans: numbers with 6 significant digits, strings unquoted.
-std::string format_scalar(const nlohmann::json& v) {
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_float()) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
-    return buf;
-  }
-  return v.dump();
-}
-
 /// Creates the output directory (InputError when impossible: it is an argument problem).
 void make_output_dir(const std::filesystem::path& dir) {
   if (dir.empty()) throw InputError("--out: the output directory must not be empty");
@@ -61,49 +29,6 @@ void make_output_dir(const std::filesystem::path& dir) {
   if (ec || !std::filesystem::is_directory(dir)) {
     throw InputError(dir.string() + ": cannot create output directory (" +
                      (ec ? ec.message() : std::string("a file of that name exists")) + ")");
-  }
-}
-
-/// Prints the summary returned by the scenario kind: its name and wall time, then its top-level
-/// scalar figures (nested objects and arrays stay in summary.json).
-void print_summary(const nlohmann::json& summary, const std::string& scenario,
-                   std::string_view kind) {
-  std::string name = scenario;
-  if (summary.contains("name") && summary["name"].is_string()) {
-    name = summary["name"].get<std::string>();
-  }
-  std::cout << "Ran " << name << " (" << kind << ")";
-  if (summary.contains("wall_time_s") && summary["wall_time_s"].is_number()) {
-    std::cout << " in " << format_scalar(summary["wall_time_s"]) << " s";
-  }
-  std::cout << '\n';
-
-  auto shown_scalar = [](const nlohmann::json& v) { return v.is_primitive() && !v.is_null(); };
-  std::size_t shown = 0;
-  if (summary.is_object()) {
-    // The outcome of a flight (completed / incomplete, converged, …) and why, first and on
-    // lines of their own; they do not count as figures.
-    for (const char* key : {"outcome", "outcome_reason"}) {
-      const auto it = summary.find(key);
-      if (it != summary.end() && it->is_string()) std::cout << key << ": " << it->get<std::string>() << '\n';
-    }
-    for (std::string_view key : kHeadlineKeys) {
-      const auto it = summary.find(std::string(key));
-      if (it == summary.end() || !shown_scalar(*it)) continue;
-      std::cout << "  " << key << ": " << format_scalar(*it) << '\n';
-      ++shown;
-    }
-    if (shown == 0) {
-      for (const auto& [key, value] : summary.items()) {
-        if (key == "name" || key == "kind" || key == "wall_time_s" || key == "outcome" ||
-            key == "outcome_reason") {
-          continue;
-        }
-        if (!shown_scalar(value) || shown == kMaxFigures) continue;
-        std::cout << "  " << key << ": " << format_scalar(value) << '\n';
-        ++shown;
-      }
-    }
   }
 }
 
@@ -142,7 +67,8 @@ void run_command(const RunArguments& args) {
       throw;
     }
   }();
-  print_summary(summary, args.scenario.string(), handler.name);
+  // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
+  std::cout << handler.outcome_line(summary) << '\n';
 
   std::vector<std::filesystem::path> written;
   for (const char* file : {"trajectory.csv", "summary.json", scenario::kResolvedScenarioFile}) {

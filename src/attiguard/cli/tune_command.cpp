@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "attiguard/app/tune_batch.hpp"
+#include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/tune_search.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/core/errors.hpp"
@@ -45,27 +46,11 @@ app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneT
   return s;
 }
 
-/// Prints the best point and the scenario's own result, and writes the best scenario (DIR/best).
-void report_best(const TuneArguments& args, const scenario::Document& nominal,
-                 const app::TuneSettings& s, const app::TuneResult& r,
-                 const std::filesystem::path& tune_path) {
+/// Writes the best scenario (DIR/best, scenario::scenario_file_name) and prints the paths written.
+void write_best(const TuneArguments& args, const scenario::Document& nominal,
+                const app::TuneSettings& s, const app::TuneResult& r,
+                const std::filesystem::path& tune_path) {
   const app::TunePoint& b = r.points[*r.best];
-  std::cout << "best:";
-  for (std::size_t d = 0; d < s.parameters.size(); ++d) {
-    std::cout << ' ' << s.parameters[d].key << " = " << b.values[d];
-  }
-  std::cout << "\nconvergence_time: " << *b.convergence_time << " s";
-  if (b.ratio) std::cout << " (" << *b.ratio << " x the eigenaxis bang-bang time)";
-  std::cout << '\n';
-  const auto& own = r.nominal;
-  if (own.admissible()) {
-    std::cout << "scenario's own values: " << *own.convergence_time << " s";
-    if (own.ratio) std::cout << " (" << *own.ratio << " x)";
-    std::cout << '\n';
-  } else {
-    std::cout << "scenario's own values: " << own.status
-              << (own.outcome.empty() ? "" : ", " + own.outcome) << '\n';
-  }
   const auto best_path = args.out_dir / scenario::scenario_file_name("best");
   {
     const scenario::Document best = app::tune_candidate(nominal, s.parameters, b.values);
@@ -116,8 +101,8 @@ void tune_command(const TuneArguments& args) {
     j["threads"] = s.threads;
     j["wall_time_s"] = wall;
     std::ofstream(tune_path, std::ios::binary | std::ios::trunc) << j.dump(2) << '\n';
-    std::cout << "Evaluated " << j["evaluated"] << " points in " << wall << " s: " << j["admissible"]
-              << " converged with every constraint kept\n";
+    // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
+    std::cout << app::tune_outcome_line(j) << '\n';
   }
   if (!r.best) {
     if (world.root()) std::cout << "Wrote:\n  " << tune_path.string() << '\n' << std::flush;
@@ -126,7 +111,7 @@ void tune_command(const TuneArguments& args) {
                               tune_path.string() + ")");
   }
   if (!world.root()) return;
-  report_best(args, nominal, s, r, tune_path);
+  write_best(args, nominal, s, r, tune_path);
   if (args.plot.value_or(table.plot.value_or(true))) {
     const PlotOutcome p = plot_results("tune", args.out_dir);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';

@@ -14,8 +14,14 @@ if command -v ccache >/dev/null 2>&1; then
   # (setup.py sets the same base_dir) then reuses these objects.
   export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(pwd)}"
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
-  "${launcher[@]}" "$@"
+# Ninja when installed (scripts/setup.sh installs it), unless build/ was configured with
+# another generator (a CMake cache keeps its generator).
+generator=()
+if command -v ninja >/dev/null 2>&1 && ! grep -qs '^CMAKE_GENERATOR:' build/CMakeCache.txt; then
+  generator=(-G Ninja)
+fi
+cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
+  -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" "$@"
 cmake --build build --parallel "$(nproc)"
 
 # The Python package is built into build/python/attiguard: PYTHONPATH=build/python imports it

@@ -1,13 +1,25 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds attiguard and runs the main job: the three paper scenarios
-# (PET-ERG, waypoint guidance, ConReach), the hold-interval certificate, the constrained waypoint
-# mission and the Python figure, with summaries and figures in out/ and an index page
-# out/index.md to open first.
+# Installs what the main job needs (scripts/setup.sh: compiler, CMake, the library's
+# dependencies, Python with numpy and matplotlib; no test tools), builds only the `attiguard`
+# program and the Python module (no tests, no benchmarks: scripts/test.sh builds those), and runs
+# the main job: the three paper scenarios (PET-ERG, waypoint guidance, ConReach), the
+# hold-interval certificate, the constrained waypoint mission and the Python figure, with
+# summaries and figures in out/ and an index page out/index.md to open first.
+# Prints the time of each part (set-up, build, scenarios).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash scripts/setup.sh
-bash scripts/build.sh
+part_start=$SECONDS
+# Prints "main.sh: PART took N s" and restarts the clock.
+part_done() {
+  echo "main.sh: $1 took $((SECONDS - part_start)) s"
+  part_start=$SECONDS
+}
+
+bash scripts/setup.sh main
+part_done "set-up (scripts/setup.sh main)"
+bash scripts/build.sh -DATTIGUARD_BUILD_TESTS=OFF -DATTIGUARD_BUILD_BENCH=OFF
+part_done "build (attiguard and the Python module)"
 
 cli=build/src/attiguard
 out=out
@@ -38,6 +50,8 @@ fi
   "conreach_hold_certificate|Hold-interval certificate of the PET-ERG (ConReach, verdict safe)|attiguard reach examples/conreach_hold_certificate.toml --out out/conreach_hold_certificate --plot|docs/mission.md" \
   "python|PET-ERG paper Fig. 4 from Python|PYTHONPATH=build/python /usr/bin/python3 examples/python_pet_erg_figure.py out/python|docs/python.md" \
   "rigid_body_pd|Rigid body under the PD law (first example)|attiguard run examples/rigid_body_pd.toml --out out/rigid_body_pd --plot|docs/scenario-format.md"
+
+part_done "scenarios"
 
 echo
 echo "Results are in $(pwd)/$out/: open $out/index.md first."

@@ -1,25 +1,45 @@
 #!/usr/bin/env bash
-# Installs every system package attiguard needs (Debian 12), non-interactively.
-# Idempotent: when all packages are already installed it does nothing (no apt-get update).
-# Runs apt-get directly as root, through sudo otherwise.
+# Installs the system packages attiguard needs (Debian 12), non-interactively.
+#   bash scripts/setup.sh        the main job (scripts/main.sh): compiler, CMake, the library's
+#                                dependencies, Python with numpy and matplotlib
+#   bash scripts/setup.sh test   also the test tools (scripts/test.sh): GoogleTest, Google
+#                                Benchmark, pytest, mypy, MPI, clang and the sanitizer runtime,
+#                                h5py, ccache, Chromium, node and the viewer's npm packages
+# Idempotent: when all packages are already installed it installs nothing (no apt-get update).
+# Prints what it installs and its download size. Runs apt-get directly as root, through sudo
+# otherwise.
 set -euo pipefail
 
-# ccache: scripts/build.sh and the wheel build of `pip install .` (setup.py) use it when present,
-# so the wheel reuses the objects of build/ (minutes saved on a fresh machine's CI run).
+mode=${1:-main}
+if [[ "$mode" != main && "$mode" != test ]]; then
+  echo "setup.sh: unknown mode '$mode' (expected nothing, 'main' or 'test')" >&2
+  exit 2
+fi
+
+# What building the program and the Python module and running the main job need.
 packages=(
-  build-essential cmake g++ pkg-config ccache
+  build-essential cmake g++ pkg-config ninja-build
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libsdp-dev liblapack-dev libblas-dev libssl-dev
-  libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy python3-pytest pybind11-dev python3-dev
-  python3-venv python3-setuptools python3-wheel python3-mypy
-  openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
-  libhdf5-dev python3-h5py   # campaign retained time series (docs/campaigns.md)
-  chromium                   # the browser test of the viewer (docs/viewer.md)
+  libhdf5-dev                # campaign retained time series (docs/campaigns.md)
+  python3 python3-dev python3-numpy python3-matplotlib pybind11-dev
 )
-# node and npm bundle the viewer (docs/viewer.md): Debian's when the machine has no node.
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  packages+=(nodejs npm)
+if [[ "$mode" == test ]]; then
+  # ccache: scripts/build.sh and the wheel build of `pip install .` (setup.py) use it when
+  # present, so the wheel reuses the objects of build/ (minutes saved on CI).
+  packages+=(
+    ccache
+    libgtest-dev libbenchmark-dev
+    python3-pytest python3-venv python3-setuptools python3-wheel python3-mypy
+    openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
+    python3-h5py               # the tests read the retained HDF5 files
+    chromium                   # the browser test of the viewer (docs/viewer.md)
+  )
+  # node and npm rebuild the viewer bundle for its reproducibility test and drive Chromium
+  # (docs/viewer.md): Debian's when the machine has no node.
+  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    packages+=(nodejs npm)
+  fi
 fi
 
 # `npm ci` in viewer/: esbuild, three and puppeteer-core as pinned in viewer/package-lock.json
@@ -53,8 +73,8 @@ for pkg in "${packages[@]}"; do
 done
 
 if ((${#missing[@]} == 0)); then
-  echo "setup.sh: all ${#packages[@]} system packages are already installed."
-  install_viewer_packages
+  echo "setup.sh ($mode): all ${#packages[@]} system packages are already installed."
+  if [[ "$mode" == test ]]; then install_viewer_packages; fi
   exit 0
 fi
 
@@ -69,10 +89,13 @@ else
   exit 1
 fi
 
-echo "setup.sh: installing ${missing[*]}"
 apt_get=("${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get -y -q
          -o DPkg::Lock::Timeout=600)
 "${apt_get[@]}" update
+echo "setup.sh ($mode): installing ${missing[*]}"
+# What apt-get is about to download (packages and their dependencies not yet on the machine).
+"${apt_get[@]}" install --no-install-recommends -s "${missing[@]}" | grep '^Inst ' | wc -l |
+  xargs -I{} echo "setup.sh ($mode): {} Debian packages with their dependencies"
 "${apt_get[@]}" install --no-install-recommends "${missing[@]}"
 
 for pkg in "${missing[@]}"; do
@@ -81,5 +104,5 @@ for pkg in "${missing[@]}"; do
     exit 1
   fi
 done
-install_viewer_packages
-echo "setup.sh: done."
+if [[ "$mode" == test ]]; then install_viewer_packages; fi
+echo "setup.sh ($mode): done."

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds attiguard and runs the whole test suite.
+# Installs the test tools as well (scripts/setup.sh test: GoogleTest, Google Benchmark, pytest,
+# MPI, the sanitizer runtime, Chromium, node and the viewer's npm packages), builds attiguard with
+# the test suite and the benchmarks, and runs the whole test suite.
 # Exits non-zero when any step or any test fails.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash scripts/setup.sh
-bash scripts/build.sh
+bash scripts/setup.sh test
+bash scripts/build.sh -DATTIGUARD_BUILD_TESTS=ON -DATTIGUARD_BUILD_BENCH=ON
 ctest --test-dir build --output-on-failure -j2
 
 # The Python package's tests (python/tests), with Debian's interpreter; conftest.py puts

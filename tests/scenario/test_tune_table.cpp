@@ -13,7 +13,7 @@ namespace attiguard::scenario {
 namespace {
 
 // A small pet_erg scenario (no [erg] table: erg.* keys are inserted when tuned).
-const std::string kBase = R"(kind = "pet_erg"
+const std::string kTuneBase = R"(kind = "pet_erg"
 [body]
 inertia = [1.0, 2.0, 3.0]
 [initial]
@@ -32,10 +32,10 @@ integrator = "rkmk4"
 step = 0.01
 )";
 
-/// The InputError message of read_tune_table on kBase + `tune` ("" when accepted).
+/// The InputError message of read_tune_table on kTuneBase + `tune` ("" when accepted).
 std::string tune_error_of(const std::string& tune) {
   try {
-    (void)read_tune_table(parse_document(kBase + tune, "t.toml"));
+    (void)read_tune_table(parse_document(kTuneBase + tune, "t.toml"));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -43,7 +43,7 @@ std::string tune_error_of(const std::string& tune) {
 }
 
 TEST(TuneTable, AbsentTableGivesNothing) {
-  const TuneTable t = read_tune_table(parse_document(kBase, "t.toml"));
+  const TuneTable t = read_tune_table(parse_document(kTuneBase, "t.toml"));
   EXPECT_FALSE(t.budget.has_value());
   EXPECT_FALSE(t.seed.has_value());
   EXPECT_FALSE(t.batch.has_value());
@@ -53,7 +53,7 @@ TEST(TuneTable, AbsentTableGivesNothing) {
 
 TEST(TuneTable, ReadsEveryKeyAndTheRangesInKeyOrder) {
   const TuneTable t = read_tune_table(parse_document(
-      kBase + "[tune]\nbudget = 40\nseed = 7\nbatch = 6\nplot = false\n[tune.ranges]\n"
+      kTuneBase + "[tune]\nbudget = 40\nseed = 7\nbatch = 6\nplot = false\n[tune.ranges]\n"
               "\"erg.kappa\" = [0.5, 50]\n\"control.kp\" = [0.1, 10]\n",
       "t.toml"));
   EXPECT_EQ(t.budget, 40);
@@ -95,9 +95,9 @@ TEST(TuneTable, BadValuesAreLocatedOneLineErrors) {
 
 // The kind's parser accepts the table and ignores it (run, check); its other tables stay strict.
 TEST(TuneTable, PetErgParserAcceptsAndIgnoresTheTable) {
-  const Document doc = parse_document(kBase + "[tune]\nbudget = 3\nwhatever = \"x\"\n", "t.toml");
+  const Document doc = parse_document(kTuneBase + "[tune]\nbudget = 3\nwhatever = \"x\"\n", "t.toml");
   EXPECT_NO_THROW(app::handler_for(doc).check(doc));
-  const Document other = parse_document(kBase + "[tuning]\nbudget = 3\n", "t.toml");
+  const Document other = parse_document(kTuneBase + "[tuning]\nbudget = 3\n", "t.toml");
   EXPECT_THROW(app::handler_for(other).check(other), InputError);
 }
 

@@ -11,6 +11,7 @@
 #include "attiguard/campaign/retain_sink.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/one_line.hpp"
 
 namespace attiguard::app {
 
@@ -26,14 +27,6 @@ bool is_figure(const std::string& key, const nlohmann::json& v) {
   // null: a figure the nominal run does not have (e.g. no convergence, no violation) that a
   // dispersed run may have; its column stays empty where it is null.
   return v.is_number() || v.is_boolean() || v.is_null();
-}
-
-/// "a.b: message" on one line.
-std::string one_line(std::string s) {
-  for (char& ch : s) {
-    if (ch == '\n' || ch == '\r') ch = ' ';
-  }
-  return s;
 }
 
 }  // namespace

@@ -10,19 +10,13 @@
 #include "attiguard/app/tune_batch.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/one_line.hpp"
 #include "attiguard/scenario/document_edit.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 
 namespace attiguard::app {
 
 namespace {
-
-std::string one_line(std::string s) {
-  for (char& ch : s) {
-    if (ch == '\n' || ch == '\r') ch = ' ';
-  }
-  return s;
-}
 
 std::optional<double> number_field(const nlohmann::json& summary, const char* key) {
   const auto it = summary.find(key);

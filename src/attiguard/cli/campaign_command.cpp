@@ -29,6 +29,7 @@
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/output_dir.hpp"
 #include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
@@ -49,19 +50,12 @@ std::string join(const std::vector<std::string>& cols) {
   return s;
 }
 
-void make_dir(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw InputError(dir.string() + ": cannot create output directory");
-  }
-}
 
 /// `--replay K`: run K again with its full trajectory in DIR/run_K.
 void replay(const app::Campaign& c, const CampaignArguments& args) {
   const long k = *args.replay;
   const std::filesystem::path dir = args.out_dir / ("run_" + std::to_string(k));
-  make_dir(dir);
+  make_output_dir(dir);
   app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
@@ -116,7 +110,7 @@ void campaign_command(const CampaignArguments& args) {
                      " (the run list and runs.csv grow with N: a campaign that size does not "
                      "finish or fit); use fewer runs, or raise the limit with --max-runs N");
   }
-  make_dir(args.out_dir);
+  make_output_dir(args.out_dir);
   const std::filesystem::path scratch =
       args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));
   const app::Campaign c = app::load_campaign(args.scenario, args.seed, scratch);

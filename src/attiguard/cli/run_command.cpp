@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/output_dir.hpp"
 #include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
@@ -19,20 +20,6 @@
 #include "attiguard/io/output_records.hpp"
 
 namespace attiguard::cli {
-namespace {
-
-/// Creates the output directory (InputError when impossible: it is an argument problem).
-void make_output_dir(const std::filesystem::path& dir) {
-  if (dir.empty()) throw InputError("--out: the output directory must not be empty");
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw InputError(dir.string() + ": cannot create output directory (" +
-                     (ec ? ec.message() : std::string("a file of that name exists")) + ")");
-  }
-}
-
-}  // namespace
 
 void run_command(const RunArguments& args) {
   const scenario::Document doc = scenario::load_document(args.scenario);

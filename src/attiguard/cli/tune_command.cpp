@@ -12,6 +12,7 @@
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/tune_search.hpp"
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/output_dir.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/scenario/dispersion.hpp"
@@ -22,13 +23,6 @@ namespace attiguard::cli {
 
 namespace {
 
-void make_dir(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw InputError(dir.string() + ": cannot create output directory");
-  }
-}
 
 /// The search settings: each flag given, else its `[tune]` key, else the default.
 app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneTable& table,
@@ -76,7 +70,7 @@ void tune_command(const TuneArguments& args) {
     // A campaign scenario is tuned at its nominal values.
     nominal = loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
     s = tune_settings(args, table, nominal);
-    if (world.root()) make_dir(args.out_dir);
+    if (world.root()) make_output_dir(args.out_dir);
   }, world);
   s.world = world;
   s.scratch = args.out_dir / ".scratch";

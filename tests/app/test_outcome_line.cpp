@@ -74,6 +74,9 @@ TEST(OutcomeLine, NonFiniteAndWrongTypedFiguresAreLeftOut) {
   EXPECT_FALSE(has(line, "tau_max")) << line;  // no ratio to a zero limit
   EXPECT_FALSE(has(line, "soon")) << line;
   expect_one_line(pet_erg_outcome_line(json::array()));
+  // A reason with a line break stays on the line; an absent reason adds nothing.
+  expect_one_line(pet_erg_outcome_line({{"outcome", "stalled"}, {"outcome_reason", "a\nb"}}));
+  EXPECT_EQ(pet_erg_outcome_line({{"outcome", "stalled"}}), "outcome: stalled");
   EXPECT_EQ(pet_erg_outcome_line(json()).rfind("outcome: unknown", 0), 0U);
 }
 

@@ -4,6 +4,7 @@
 #include "attiguard/app/outcome_line.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <optional>
 #include <string_view>
@@ -11,6 +12,7 @@
 
 #include "attiguard/campaign/aggregation.hpp"
 #include "attiguard/core/four_digits.hpp"
+#include "attiguard/core/one_line.hpp"
 
 namespace attiguard::app {
 
@@ -24,7 +26,7 @@ std::optional<double> number(const json& j, std::string_view key) {
   const auto it = j.find(key);
   if (it == j.end() || !it->is_number()) return std::nullopt;
   const double v = it->get<double>();
-  if (!(v - v == 0.0)) return std::nullopt;  // ±inf, NaN
+  if (!std::isfinite(v)) return std::nullopt;
   return v;
 }
 
@@ -59,14 +61,14 @@ std::string fig(double v) { return four_digits(v); }
 class Line {
  public:
   explicit Line(std::string_view word) : line_("outcome: ") { line_ += word; }
-  /// Appends " (detail)" right after the word (or the last part).
+  /// Appends " (detail)" right after the word (or the last part); nothing when empty.
   Line& detail(std::string_view d) {
-    if (!d.empty()) (line_ += " (") += std::string(d) + ")";
+    if (!d.empty()) (line_ += " (") += one_line(std::string(d)) + ")";
     return *this;
   }
-  /// A part "text".
+  /// A part "; text" (line breaks in it become spaces); nothing when empty.
   Line& part(std::string_view t) {
-    (line_ += "; ") += t;
+    if (!t.empty()) (line_ += "; ") += one_line(std::string(t));
     return *this;
   }
   /// A part "label value unit" when the value is present.

@@ -50,7 +50,6 @@ std::string join(const std::vector<std::string>& cols) {
   return s;
 }
 
-
 /// `--replay K`: run K again with its full trajectory in DIR/run_K.
 void replay(const app::Campaign& c, const CampaignArguments& args) {
   const long k = *args.replay;

@@ -23,7 +23,6 @@ namespace attiguard::cli {
 
 namespace {
 
-
 /// The search settings: each flag given, else its `[tune]` key, else the default.
 app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneTable& table,
                                 const scenario::Document& nominal) {

@@ -84,6 +84,10 @@ class CMakeBuild(build_ext):
             "-DATTIGUARD_BUILD_TESTS=OFF",
             "-DATTIGUARD_BUILD_BENCH=OFF",
         ]
+        # The generator of scripts/build.sh (Ninja when installed), so that the compile commands
+        # and with them ccache's keys are those of build/ (a new build-pip/ has no cache).
+        if shutil.which("ninja") and not (build_dir / "CMakeCache.txt").exists():
+            args += ["-G", "Ninja"]
         if shutil.which("ccache"):
             args.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
         args += os.environ.get("ATTIGUARD_CMAKE_ARGS", "").split()

@@ -9,6 +9,7 @@
 
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/scenario/mission_scenario.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
@@ -26,6 +27,24 @@ namespace {
 
 using scenario::Document;
 
+/// Passes the rows to the file's sink and stops the run at the next row once SIGINT or SIGTERM
+/// arrived (io/interruption.hpp): the run then ends with io::Interrupted and its
+/// trajectory.csv.partial holds the rows so far (docs/conventions.md, "Outputs").
+class InterruptibleRows final : public io::RowSink {
+ public:
+  explicit InterruptibleRows(io::RowSink& rows) : rows_(rows) {}
+  void begin(const std::vector<std::string>& columns) override { rows_.begin(columns); }
+  void row(std::span<const double> values) override {
+    if (io::interrupted()) io::throw_if_interrupted();
+    rows_.row(values);
+  }
+  void end() override { rows_.end(); }
+  [[nodiscard]] bool wants_rows() const noexcept override { return rows_.wants_rows(); }
+
+ private:
+  io::RowSink& rows_;
+};
+
 /// Runs `simulate` (rows into the sink the options ask for, returns the summary), then adds
 /// wall_time_s and writes DIR/summary.json when files are written: the one place a run's files
 /// are written.
@@ -35,6 +54,7 @@ nlohmann::json run_with_sink(const RunOptions& options,
   io::NullRowSink none;
   std::optional<io::CsvRowSink> csv;
   if (options.write_files) {
+    io::throw_if_interrupted();
     io::ensure_directory(options.out_dir);
     io::remove_outputs(options.out_dir, {"trajectory.csv", "summary.json"});
     csv.emplace(options.out_dir / "trajectory.csv");
@@ -42,7 +62,9 @@ nlohmann::json run_with_sink(const RunOptions& options,
   io::RowSink* file_rows = csv ? static_cast<io::RowSink*>(&*csv) : nullptr;
   std::optional<io::TeeRowSink> tee;
   if (file_rows && options.rows) tee.emplace(*file_rows, *options.rows);
-  io::RowSink& rows = tee ? *tee : file_rows ? *file_rows : options.rows ? *options.rows : none;
+  io::RowSink& chosen = tee ? *tee : file_rows ? *file_rows : options.rows ? *options.rows : none;
+  InterruptibleRows interruptible(chosen);  // runs that write files stop at a signal
+  io::RowSink& rows = options.write_files ? static_cast<io::RowSink&>(interruptible) : chosen;
   nlohmann::json summary = simulate(rows);
   if (csv) csv->end();  // trajectory.csv complete: renamed from trajectory.csv.partial
   summary["wall_time_s"] =
@@ -74,7 +96,7 @@ nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
       run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>(doc, options);
   if (summary.contains("failure") && summary["failure"].is_string()) {
     throw NumericalError("mission: " + summary["failure"].get<std::string>() +
-                         " (summary.json written with the twin's results)");
+                         " (the twin's results are in the summary)");
   }
   return summary;
 }

@@ -9,6 +9,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/csv_writer.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/partial_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
@@ -74,6 +75,8 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   const std::vector<InitialSet> cells =
       partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);
   const std::vector<ReachResult> results = run_partitioned(loop, cells, sc.settings, sc.threads, world);
+  // SIGINT / SIGTERM stop the analysis between its stages (io/interruption.hpp).
+  io::throw_if_interrupted();
   const double analysis_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const SafetyVerdict verdict = verify_safety(sc.safety, results);
@@ -142,6 +145,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   }
 
   // CSV outputs.
+  io::throw_if_interrupted();
   {
     io::CsvWriter csv(out_dir / "trajectory.csv",
                       {"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z"});
@@ -191,6 +195,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   }
 
   // Boundary representation in one exp chart (needs every ball inside it).
+  io::throw_if_interrupted();
   const int chart = choose_chart(results);
   j["chart"] = chart;
   if (sc.boundary_points > 0) {
@@ -219,8 +224,10 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   }
 
   // Soundness sampling.
+  io::throw_if_interrupted();
   if (sc.soundness.samples > 0) {
     const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
+    io::throw_if_interrupted();
     j["soundness"] = {{"samples", rep.samples}, {"inside", rep.inside}, {"max_ratio", rep.max_ratio},
                       {"tube_inside", rep.tube_inside}, {"tube_max_excess", rep.tube_max_excess},
                       {"wall_time_s", rep.wall_time_s}};
@@ -242,6 +249,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
     adv.seed = sc.soundness.seed;
     adv.threads = sc.soundness.threads;
     const AdversarialReport worst = adversarial_check(loop, cells, results, adv);
+    io::throw_if_interrupted();
     j["adversarial"] = {{"evaluations", worst.evaluations}, {"worst_ratio", worst.worst_ratio},
                         {"worst_ratio_time", worst.worst_ratio_time},
                         {"attitude_spread", worst.attitude_spread},
@@ -274,6 +282,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   } else {
     j["soundness"] = {{"samples", 0}, {"inside", 0}};
   }
+  io::throw_if_interrupted();
   io::write_json(out_dir / "reach.json", j);
   if (verdict.requested && !verdict.proved) {
     throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);

@@ -10,7 +10,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -33,16 +32,15 @@
 #include "attiguard/cli/export_aem_command.hpp"
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/app/output_folder.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/io/output_records.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
 
 namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void on_sigint(int) { g_stop.store(true); }
 
 std::string join(const std::vector<std::string>& cols) {
   std::string s;
@@ -51,18 +49,18 @@ std::string join(const std::vector<std::string>& cols) {
 }
 
 /// `--replay K`: run K again with its full trajectory in DIR/run_K.
-void replay(const app::Campaign& c, const CampaignArguments& args) {
+void replay(const app::Campaign& c, const CampaignArguments& args, const app::OutputFolder& folder) {
   const long k = *args.replay;
-  const std::filesystem::path dir = args.out_dir / ("run_" + std::to_string(k));
+  const std::filesystem::path dir = folder.dir();
   make_output_dir(dir);
   app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
-  io::remove_recorded_plots(dir);
   const app::RunRecord r = app::run_one(c, k, options);
+  folder.finish();  // a signal during the run: not a row of the campaign
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
-  std::ofstream(dir / "run.csv", std::ios::binary) << header << '\n' << row << '\n';
+  io::write_text(dir, "run.csv", header + '\n' + row + '\n');
   // The one-line outcome of the replayed run (docs/conventions.md, "Outcome line"): the kind's
   // line, or its status and reason; whether it reproduces its row of runs.csv.
   std::string line = r.status == app::RunStatus::ok
@@ -89,12 +87,12 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   if (args.view && r.status == app::RunStatus::ok) {
     std::cout << "  " << write_run_view(dir).string() << '\n';
   }
+  folder.finish();
 }
 
-}  // namespace
-
-void campaign_command(const CampaignArguments& args) {
-  const parallel::World world = parallel::mpi_world();
+/// The campaign (or the replay) into `folder`.
+void campaign_into(const CampaignArguments& args, const parallel::World& world,
+                   app::OutputFolder& folder) {
   if (args.threads < 1) throw InputError("--threads: must be at least 1");
   if ((args.view || args.aem) && !args.replay) {
     throw InputError("--view and --aem go with --replay K (the trajectory of one run); view a "
@@ -113,8 +111,9 @@ void campaign_command(const CampaignArguments& args) {
   const std::filesystem::path scratch =
       args.out_dir / ".scratch" / ("rank" + std::to_string(world.rank));
   const app::Campaign c = app::load_campaign(args.scenario, args.seed, scratch);
+  folder.set_subject(std::string(c.handler->name), args.scenario.string());
   if (args.replay) {
-    if (world.root()) replay(c, args);
+    if (world.root()) replay(c, args, folder);
     return;
   }
 
@@ -130,6 +129,12 @@ void campaign_command(const CampaignArguments& args) {
     for (const auto& [k, line] : previous) {
       if (k < args.runs) done.emplace(k, line);
     }
+    // The folder is this campaign's: what it resumes from stays, the rest goes
+    // (app/output_folder.hpp). A refused --resume changed nothing.
+    app::Keep keep;
+    keep.names = {"runs.csv", "campaign_identity.json", "retained.h5", scenario::kResolvedScenarioFile};
+    keep.replays = true;
+    folder.claim(keep);
   }
   parallel::barrier(world);
   std::vector<long> todo;
@@ -140,8 +145,6 @@ void campaign_command(const CampaignArguments& args) {
 
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {
-    if (!args.resume) std::filesystem::remove(runs_path);
-    io::remove_recorded_plots(args.out_dir);
     write_identity(identity_path, identity);
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
@@ -152,8 +155,6 @@ void campaign_command(const CampaignArguments& args) {
               << std::flush;
   }
 
-  g_stop.store(false);
-  const auto previous = std::signal(SIGINT, on_sigint);
   const auto start = std::chrono::steady_clock::now();
   campaign::Progress progress(std::cout, static_cast<long>(share.size()),
                               world.root() && ::isatty(STDOUT_FILENO) == 1);
@@ -168,7 +169,9 @@ void campaign_command(const CampaignArguments& args) {
                      static_cast<std::size_t>(args.runs), c.plan.retain.interval, args.resume);
   }
   std::map<long, std::string> mine;
-  app::run_many(c, share, args.threads, scratch, g_stop, [&](const app::RunRecord& r) {
+  // SIGINT / SIGTERM: the workers finish their current run and pick no new one
+  // (io/interruption.hpp); the rows so far are kept.
+  app::run_many(c, share, args.threads, scratch, io::interruption_flag(), [&](const app::RunRecord& r) {
     if (retained && r.status == app::RunStatus::ok) {
       retained->write_run(static_cast<std::size_t>(r.index), r.retained, r.retained_samples);
     }
@@ -178,7 +181,6 @@ void campaign_command(const CampaignArguments& args) {
     if (world.root()) progress.tick();
   });
   progress.finish();
-  std::signal(SIGINT, previous);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::map<long, std::string> gathered = campaign::gather_rows(mine, world);
@@ -199,21 +201,17 @@ void campaign_command(const CampaignArguments& args) {
   nlohmann::json summary = campaign::aggregate(info, campaign::csv_split(header), done);
   summary["scenario_sha256"] = identity.scenario_sha256;
   summary["attiguard_version"] = identity.version;
-  {
-    std::ofstream out(args.out_dir / "campaign.json", std::ios::binary | std::ios::trunc);
-    out << summary.dump(2) << '\n';
-  }
+  io::write_text(args.out_dir, "campaign.json", summary.dump(2) + '\n');
   std::filesystem::remove(args.out_dir / ".scratch", ec);
 
   // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
   std::cout << app::campaign_outcome_line(summary) << '\n';
-  if (g_stop.load()) {
+  if (io::interrupted()) {
+    // campaign.json becomes campaign.json.partial's "result" (app/output_folder.hpp).
     std::cout << "Interrupted after " << wall << " s: " << done.size() << " of " << args.runs
               << " runs kept in " << runs_path.string() << "; continue with --resume\n"
               << std::flush;
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
-    return;
+    folder.finish();
   }
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
             << (args.out_dir / "campaign.json").string() << '\n';
@@ -231,6 +229,28 @@ void campaign_command(const CampaignArguments& args) {
     io::record_plots(args.out_dir, p.written);
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
     if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
+  }
+  folder.finish();
+}
+
+}  // namespace
+
+void campaign_command(const CampaignArguments& args) {
+  // The folder of a campaign (DIR) or of a replay (DIR/run_K): its earlier outputs go first,
+  // even when the scenario is then refused — except with --resume, whose folder is its input
+  // (campaign_into claims it once the identity matches). A failure leaves .partial files and
+  // campaign.json.partial / summary.json.partial (docs/conventions.md, "Outputs").
+  const parallel::World world = parallel::mpi_world();
+  const bool replaying = args.replay && *args.replay >= 0;
+  app::OutputFolder folder(replaying ? args.out_dir / ("run_" + std::to_string(*args.replay)) : args.out_dir,
+                           replaying ? app::OutputCommand::replay : app::OutputCommand::campaign,
+                           world.root() && (replaying || !args.replay));
+  if (!args.resume || replaying) folder.claim();
+  folder.set_subject({}, args.scenario.string());
+  try {
+    campaign_into(args, world, folder);
+  } catch (...) {
+    folder.fail(std::current_exception());
   }
 }
 

@@ -10,6 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/app/aem_export.hpp"
+#include "attiguard/app/output_folder.hpp"
+#include "attiguard/io/interruption.hpp"
+#include "attiguard/io/partial_file.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/ephemeris_table.hpp"
@@ -28,7 +31,9 @@ std::string summary_name(const std::filesystem::path& dir) {
 
 }  // namespace
 
-void export_aem_command(const ExportAemArguments& args) {
+namespace {
+
+void export_aem_into(const ExportAemArguments& args) {
   std::error_code ec;
   if (!std::filesystem::is_directory(args.dir, ec)) {
     throw InputError(args.dir.string() + ": not a directory (expected the --out DIR of a run)");
@@ -52,7 +57,42 @@ void export_aem_command(const ExportAemArguments& args) {
   }
   if (args.rates) meta.with_rates = true;
   const auto path = app::export_aem(args.dir, meta, args.out);
+  io::throw_if_interrupted();
   std::cout << "Wrote:\n  " << path.string() << '\n';
+}
+
+}  // namespace
+
+void export_aem_command(const ExportAemArguments& args) {
+  // DIR holds the run the AEM is made of: only DIR/attitude.aem (or --out FILE) is this
+  // command's, and an earlier one goes before anything is read (app/output_folder.hpp).
+  // An --out FILE named *.aem is removed first as well; any other name (a mistyped input file)
+  // is only ever replaced by a complete AEM.
+  const bool own_file = !args.out.empty();
+  app::OutputFolder folder(args.dir, app::OutputCommand::export_aem);
+  if (own_file && args.out.extension() == ".aem") {
+    std::error_code ec;
+    std::filesystem::remove(args.out, ec);
+    std::filesystem::remove(io::partial_path(args.out), ec);
+  } else {
+    folder.claim();
+  }
+  try {
+    export_aem_into(args);
+  } catch (...) {
+    if (own_file) {
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(args.out, ec)) {
+        std::filesystem::rename(args.out, io::partial_path(args.out), ec);
+      }
+      if (io::interrupted()) {
+        throw io::Interrupted("interrupted by " + io::interruption_signal_name() + ": no " +
+                              args.out.string() + " written");
+      }
+      throw;
+    }
+    folder.fail(std::current_exception());
+  }
 }
 
 std::filesystem::path write_run_aem(const std::filesystem::path& scenario,

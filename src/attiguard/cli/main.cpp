@@ -28,6 +28,7 @@
 #include "attiguard/core/version.hpp"
 #include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
 namespace {
@@ -136,6 +137,9 @@ void add_limit_flags(CLI::App* cmd, attiguard::scenario::WorkLimits& limits) {
 }
 
 int run(int argc, char** argv) {
+  // SIGINT and SIGTERM end every command through its failure path: exit 3, one error line, only
+  // .partial files and a status in its folder (io/interruption.hpp, app/output_folder.hpp).
+  attiguard::io::install_interruption_handlers();
   CLI::App app{"attiguard: spacecraft attitude guidance and control with safety guarantees",
                "attiguard"};
   app.set_version_flag("--version", std::string("attiguard ") + attiguard::version_string);
@@ -296,6 +300,7 @@ int run(int argc, char** argv) {
     return fail(ExitCode::invalid_input,
                 "a subcommand is required: run, check, reach or campaign (see attiguard --help)");
   }
+  attiguard::io::throw_if_interrupted();  // a command that ended without looking (check, MPI ranks)
   return static_cast<int>(ExitCode::ok);
 }
 

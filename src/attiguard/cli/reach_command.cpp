@@ -16,6 +16,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/outcome_line.hpp"
+#include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/reach_run.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
@@ -36,24 +37,26 @@ nlohmann::json read_reach_json(const std::filesystem::path& path) {
 
 }  // namespace
 
-void reach_command(const ReachArguments& args) {
+namespace {
+
+void reach_into(const ReachArguments& args, const parallel::World& world, app::OutputFolder& folder) {
   const scenario::Document doc = scenario::load_document(args.scenario);
   const reach::ReachScenario sc = scenario::parse_reach(doc);
+  folder.set_subject("reach", args.scenario.string());
   if (args.out_dir.empty()) throw InputError("--out: the output directory must not be empty");
 
   // Under mpirun the partition cells are split over the ranks (docs/scaling.md); rank 0 prints
   // and writes. Outputs are written even when the verification fails; plots are made before
   // rethrowing.
-  const parallel::World world = parallel::mpi_world();
   nlohmann::json summary;
   if (world.root()) {
-    io::remove_recorded_plots(args.out_dir);
     io::ensure_directory(args.out_dir);
     io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
                    scenario::resolve_scenario(doc, [](const scenario::Document& d) { (void)scenario::parse_reach(d); }));
   }
   // A safety verification that fails (exit 4) still has its reach.json, its outcome line, its
-  // plots and view; the failure is rethrown after them.
+  // plots and view; the failure is rethrown after them. Any other failure leaves
+  // reach.json.partial saying why (app/output_folder.hpp).
   std::exception_ptr unproved;
   try {
     summary = app::run_reach(sc, args.out_dir, world);
@@ -61,12 +64,6 @@ void reach_command(const ReachArguments& args) {
     if (!world.root()) throw;
     unproved = std::current_exception();
     summary = read_reach_json(args.out_dir / "reach.json");
-  } catch (const Error& e) {  // no reach.json: reach.json.partial says why
-    if (world.root()) {
-      io::write_failure_status(args.out_dir, "reach.json", "reach", args.scenario.string(),
-                               static_cast<int>(e.code()), e.what());
-    }
-    throw;
   }
   if (!world.root()) return;
   // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
@@ -81,7 +78,25 @@ void reach_command(const ReachArguments& args) {
   }
   if (args.view) std::cout << "  " << write_run_view(args.out_dir).string() << '\n';
   std::cout.flush();
+  folder.finish();
   if (unproved) std::rethrow_exception(unproved);
+}
+
+}  // namespace
+
+void reach_command(const ReachArguments& args) {
+  // The folder's earlier outputs go first, even when the scenario is then refused; a failure
+  // other than an unproved verdict leaves .partial files and reach.json.partial
+  // (docs/conventions.md, "Outputs").
+  const parallel::World world = parallel::mpi_world();
+  app::OutputFolder folder(args.out_dir, app::OutputCommand::reach, world.root());
+  folder.claim();
+  folder.set_subject("reach", args.scenario.string());
+  try {
+    reach_into(args, world, folder);
+  } catch (...) {
+    folder.fail(std::current_exception());
+  }
 }
 
 }  // namespace attiguard::cli

@@ -17,11 +17,15 @@
 #include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/app/failure.hpp"
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/app/output_folder.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/io/output_records.hpp"
 
 namespace attiguard::cli {
 
-void run_command(const RunArguments& args) {
+namespace {
+
+void run_into(const RunArguments& args, app::OutputFolder& folder) {
   const scenario::Document doc = scenario::load_document(args.scenario);
   if (doc.has_top_level("dispersions")) {  // a campaign scenario (docs/campaigns.md)
     throw InputError(args.scenario.string() +
@@ -30,28 +34,20 @@ void run_command(const RunArguments& args) {
                      "`--replay K`");
   }
   const app::KindHandler& handler = app::handler_for(doc);
+  folder.set_subject(std::string(handler.name), args.scenario.string());
   make_output_dir(args.out_dir);
 
   app::RunOptions options;
   options.out_dir = args.out_dir;
-  io::remove_recorded_plots(args.out_dir);  // an earlier run's figures, maybe of another kind
   // What this run is computed from, every default filled in (scenario/resolved_scenario.hpp).
   io::write_text(args.out_dir, scenario::kResolvedScenarioFile, scenario::resolve_scenario(doc, handler.check));
   const nlohmann::json summary = [&] {
-    // A failure leaves summary.json.partial saying so beside trajectory.csv.partial.
-    const auto mark_partial = [&](const Error& e) {
-      io::write_failure_status(args.out_dir, "summary.json", std::string(handler.name),
-                               args.scenario.string(), static_cast<int>(e.code()), e.what());
-    };
     try {
       return handler.run(doc, options);
-    } catch (const NumericalError& e) {  // name the key most likely responsible (app/failure.hpp)
-      const NumericalError located(app::located_numerical_failure(e.what(), doc));
-      mark_partial(located);
-      throw located;
-    } catch (const Error& e) {
-      mark_partial(e);
+    } catch (const io::Interrupted&) {
       throw;
+    } catch (const NumericalError& e) {  // name the key most likely responsible (app/failure.hpp)
+      throw NumericalError(app::located_numerical_failure(e.what(), doc));
     }
   }();
   // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
@@ -75,10 +71,26 @@ void run_command(const RunArguments& args) {
     if (plots.skipped_because) no_plots = *plots.skipped_because;
   }
 
+  folder.finish();  // a signal during the run: its outputs become .partial (app/output_folder.hpp)
   std::cout << "Wrote:\n";
   for (const auto& path : written) std::cout << "  " << path.string() << '\n';
   std::cout.flush();
   if (!no_plots.empty()) std::cerr << "attiguard: warning: no plots: " << no_plots << '\n';
+}
+
+}  // namespace
+
+void run_command(const RunArguments& args) {
+  // The folder's earlier outputs go first, even when the scenario is then refused; a failure
+  // leaves .partial files and summary.json.partial (docs/conventions.md, "Outputs").
+  app::OutputFolder folder(args.out_dir, app::OutputCommand::run);
+  folder.claim();
+  folder.set_subject({}, args.scenario.string());
+  try {
+    run_into(args, folder);
+  } catch (...) {
+    folder.fail(std::current_exception());
+  }
 }
 
 }  // namespace attiguard::cli

@@ -10,7 +10,9 @@
 
 #include "attiguard/app/tune_batch.hpp"
 #include "attiguard/app/outcome_line.hpp"
+#include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/tune_search.hpp"
+#include "attiguard/io/output_records.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/output_dir.hpp"
 #include "attiguard/core/errors.hpp"
@@ -47,18 +49,18 @@ void write_best(const TuneArguments& args, const scenario::Document& nominal,
   const auto best_path = args.out_dir / scenario::scenario_file_name("best");
   {
     const scenario::Document best = app::tune_candidate(nominal, s.parameters, b.values);
-    std::ofstream out(best_path, std::ios::binary | std::ios::trunc);
-    out << "# Written by attiguard tune from " << args.scenario.filename().string()
-        << " (docs/pet-erg.md, section \"Tuning\")\n"
-        << scenario::document_text(best);
+    io::write_text(args.out_dir, best_path.filename().string(),
+                   "# Written by attiguard tune from " + args.scenario.filename().string() +
+                       " (docs/pet-erg.md, section \"Tuning\")\n" + scenario::document_text(best));
   }
   std::cout << "Wrote:\n  " << tune_path.string() << "\n  " << best_path.string() << '\n';
 }
 
 }  // namespace
 
-void tune_command(const TuneArguments& args) {
-  const parallel::World world = parallel::mpi_world();
+namespace {
+
+void tune_into(const TuneArguments& args, const parallel::World& world, app::OutputFolder& folder) {
   scenario::TuneTable table;
   scenario::Document nominal;
   app::TuneSettings s;
@@ -71,6 +73,7 @@ void tune_command(const TuneArguments& args) {
     s = tune_settings(args, table, nominal);
     if (world.root()) make_output_dir(args.out_dir);
   }, world);
+  folder.set_subject("pet_erg", args.scenario.string());
   s.world = world;
   s.scratch = args.out_dir / ".scratch";
   if (world.root()) {
@@ -93,22 +96,43 @@ void tune_command(const TuneArguments& args) {
     j["ranks"] = world.size;
     j["threads"] = s.threads;
     j["wall_time_s"] = wall;
-    std::ofstream(tune_path, std::ios::binary | std::ios::trunc) << j.dump(2) << '\n';
+    io::write_text(args.out_dir, tune_path.filename().string(), j.dump(2) + '\n');
     // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
     std::cout << app::tune_outcome_line(j) << '\n';
   }
   if (!r.best) {
+    folder.finish();
     if (world.root()) std::cout << "Wrote:\n  " << tune_path.string() << '\n' << std::flush;
     throw VerificationFailure(args.scenario.string() + ": attiguard tune: " +
                               j["outcome_reason"].get<std::string>() + " (see " +
                               tune_path.string() + ")");
   }
   if (!world.root()) return;
+  folder.finish();
   write_best(args, nominal, s, r, tune_path);
   if (args.plot.value_or(table.plot.value_or(true))) {
     const PlotOutcome p = plot_results("tune", args.out_dir);
+    io::record_plots(args.out_dir, p.written);  // the next command in DIR removes them
     for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
     if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
+  }
+  folder.finish();
+}
+
+}  // namespace
+
+void tune_command(const TuneArguments& args) {
+  // The folder's earlier outputs go first, even when the scenario is then refused; a failure
+  // other than "none converged" (exit 4, tune.json is its result) leaves .partial files and
+  // tune.json.partial (docs/conventions.md, "Outputs").
+  const parallel::World world = parallel::mpi_world();
+  app::OutputFolder folder(args.out_dir, app::OutputCommand::tune, world.root());
+  folder.claim();
+  folder.set_subject("pet_erg", args.scenario.string());
+  try {
+    tune_into(args, world, folder);
+  } catch (...) {
+    folder.fail(std::current_exception());
   }
 }
 

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <system_error>
 
+#include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/view_page.hpp"
 #include "attiguard/cli/viewer_bundle.hpp"
 #include "attiguard/core/errors.hpp"
@@ -23,12 +24,22 @@ std::filesystem::path write_run_view(const std::filesystem::path& dir) {
 }
 
 void view_command(const std::filesystem::path& dir) {
+  // DIR holds the results the view is made of: only DIR/view.html is this command's, and an
+  // earlier one (maybe of other results) goes before anything is read (app/output_folder.hpp).
+  app::OutputFolder folder(dir, app::OutputCommand::view);
+  folder.claim();
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(dir.string() + ": not a directory (expected the --out DIR of attiguard run, "
-                                    "reach or campaign)");
+  std::filesystem::path path;
+  try {
+    if (!std::filesystem::is_directory(dir, ec)) {
+      throw InputError(dir.string() + ": not a directory (expected the --out DIR of attiguard run, "
+                                      "reach or campaign)");
+    }
+    path = write_run_view(dir);
+    folder.finish();
+  } catch (...) {
+    folder.fail(std::current_exception());
   }
-  const auto path = write_run_view(dir);
   const auto bytes = std::filesystem::file_size(path, ec);
   char size[64];
   std::snprintf(size, sizeof size, "%.2f MB", ec ? 0.0 : static_cast<double>(bytes) / 1e6);

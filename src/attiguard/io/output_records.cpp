@@ -37,11 +37,14 @@ void remove_recorded_plots(const std::filesystem::path& dir) {
 
 void write_failure_status(const std::filesystem::path& dir, const std::string& name,
                           const std::string& kind, const std::string& scenario, int exit_code,
-                          const std::string& error) noexcept {
+                          const std::string& error, const nlohmann::json& result) noexcept {
   try {
-    const nlohmann::json status = {{"status", "partial"},  {"kind", kind},
-                                   {"scenario", scenario}, {"exit_code", exit_code},
-                                   {"error", error}};
+    nlohmann::json status = {{"status", "partial"},
+                             {"kind", kind.empty() ? nlohmann::json(nullptr) : nlohmann::json(kind)},
+                             {"scenario", scenario},
+                             {"exit_code", exit_code},
+                             {"error", error}};
+    if (!result.is_null()) status["result"] = result;
     std::ofstream out(partial_path(dir / name), std::ios::binary | std::ios::trunc);
     out << status.dump(2) << '\n';
   } catch (...) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace attiguard::io {
 
 /// Records the PNG files of `written` (their file names) in DIR/plots.txt.
@@ -19,12 +21,15 @@ void record_plots(const std::filesystem::path& dir, const std::vector<std::files
 void remove_recorded_plots(const std::filesystem::path& dir);
 
 /// Writes DIR/NAME.partial, a JSON object {"status": "partial", "kind", "scenario",
-/// "exit_code", "error"}: the run that was writing DIR/NAME failed with `error`, and the other
-/// NAME.partial files beside it hold what it wrote up to the failure. Never throws (a failure
-/// is being reported already).
+/// "exit_code", "error"[, "result"]}: the run that was writing DIR/NAME failed with `error`, and
+/// the other NAME.partial files beside it hold what it wrote up to the failure; `kind` "" is
+/// written as null (an input refused before its kind was known); `result`, when not null, is the
+/// NAME the command had completed before it failed (app/output_folder.hpp). Never throws (a
+/// failure is being reported already).
 void write_failure_status(const std::filesystem::path& dir, const std::string& name,
                           const std::string& kind, const std::string& scenario, int exit_code,
-                          const std::string& error) noexcept;
+                          const std::string& error,
+                          const nlohmann::json& result = nullptr) noexcept;
 
 /// Writes `text` to DIR/NAME (through NAME.partial, renamed when complete); throws InputError
 /// "cannot write FILE: reason" on failure.

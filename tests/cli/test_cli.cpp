@@ -345,8 +345,9 @@ TEST(CliContract, FailedReachWritesAPartialReachJson) {
   EXPECT_NE(r.err.find(reason), std::string::npos) << r.err << "\n" << status;
 }
 
-// SIGINT and SIGTERM in the middle of a run leave trajectory.csv.partial (its rows so far) and
-// no trajectory.csv or summary.json that would look complete.
+// SIGINT and SIGTERM in the middle of a run end it with exit 3 and leave trajectory.csv.partial
+// (its rows so far), the status summary.json.partial and no trajectory.csv or summary.json that
+// would look complete (every command: tests/cli/test_output_folder.cpp).
 TEST(CliContract, InterruptedRunLeavesOnlyAPartialFile) {
   const fs::path dir = scratch_dir();
   std::string text = read_file(example("pet_erg_paper.toml"));
@@ -365,7 +366,9 @@ TEST(CliContract, InterruptedRunLeavesOnlyAPartialFile) {
                                " ]; do sleep 0.05; done; kill -" + sig + " $p; wait $p";
     const int status = std::system(("sh -c " + quoted(script)).c_str());
     ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 128 + (std::string(sig) == "INT" ? 2 : 15));
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+    EXPECT_NE(read_file(out / "summary.json.partial").find(std::string("interrupted by SIG") + sig),
+              std::string::npos);
     EXPECT_TRUE(fs::exists(out / "trajectory.csv.partial"));
     EXPECT_EQ(read_file(out / "trajectory.csv.partial").rfind("t,", 0), 0u);
     EXPECT_FALSE(fs::exists(out / "trajectory.csv"));

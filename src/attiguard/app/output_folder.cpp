@@ -70,11 +70,14 @@ void remove_file(const fs::path& path) {
   fs::remove(path, ec);
 }
 
-/// Removes NAME and NAME.partial for each known name in `dir` except those in `keep`, and the
-/// figures recorded in plots.txt.
+/// Removes NAME and NAME.partial for each of `names` in `dir` except those in `keep`, and the
+/// figures recorded in plots.txt when plots.txt is one of them.
 void remove_known(const fs::path& dir, std::span<const std::string> names,
                   const std::vector<std::string>& keep) {
-  if (std::find(keep.begin(), keep.end(), kPlotList) == keep.end()) io::remove_recorded_plots(dir);
+  const auto listed = [](const auto& list, const std::string& n) {
+    return std::find(list.begin(), list.end(), n) != list.end();
+  };
+  if (listed(names, kPlotList) && !listed(keep, kPlotList)) io::remove_recorded_plots(dir);
   for (const std::string& n : names) {
     if (std::find(keep.begin(), keep.end(), n) != keep.end()) continue;
     remove_file(dir / n);
@@ -200,7 +203,7 @@ void OutputFolder::fail(const std::exception_ptr& error) const {
     }
     fs::rename(dir_ / n, io::partial_path(dir_ / n), ec);
   }
-  io::remove_recorded_plots(dir_);
+  if (claims_folder(command_)) io::remove_recorded_plots(dir_);  // view, export-aem: not theirs
   if (!status.empty()) {
     io::write_failure_status(dir_, status, kind_, scenario_, static_cast<int>(f.code), f.message,
                              result);

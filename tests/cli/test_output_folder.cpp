@@ -344,6 +344,24 @@ TEST(OutputFolderRefused, ViewThatCannotBeMadeLeavesNoEarlierView) {
   fs::remove_all(work);
 }
 
+// A command's own input is never removed, even when it carries an output name: the resolved
+// scenario of a folder re-run into that folder, the best.toml of a tune tuned again into it.
+TEST(OutputFolderRefused, InputWithAnOutputNameIsKept) {
+  const fs::path work = work_dir();
+  run_command(work, Cmd::run_other_kind, "a");
+  ASSERT_FALSE(HasFatalFailure());
+  const std::string trajectory = slurp(work / "a/run_1/trajectory.csv");
+  Ran r = attiguard(work, "run a/run_1/scenario.resolved.toml --out a/run_1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(work / "a/run_1/trajectory.csv"), trajectory);
+  run_command(work, Cmd::tune, "b");
+  ASSERT_FALSE(HasFatalFailure());
+  r = attiguard(work, "tune b/run_1/best.toml --budget 4 --range control.kp=4:6 --no-plot --out b/run_1");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(work / "b/run_1/best.toml"));
+  fs::remove_all(work);
+}
+
 }  // namespace attiguard_output_folder_test
 
 #endif  // ATTIGUARD_CLI_PATH

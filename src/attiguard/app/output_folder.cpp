@@ -70,16 +70,28 @@ void remove_file(const fs::path& path) {
   fs::remove(path, ec);
 }
 
-/// Removes NAME and NAME.partial for each of `names` in `dir` except those in `keep`, and the
-/// figures recorded in plots.txt when plots.txt is one of them.
+/// `path` as compared with the inputs of a command.
+fs::path canonical_form(const fs::path& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? path.lexically_normal() : p;
+}
+
+bool is_input(const fs::path& path, const std::vector<fs::path>& inputs) {
+  if (inputs.empty()) return false;
+  return std::find(inputs.begin(), inputs.end(), canonical_form(path)) != inputs.end();
+}
+
+/// Removes NAME and NAME.partial for each of `names` in `dir` except those in `keep` and the
+/// command's inputs, and the figures recorded in plots.txt when plots.txt is one of them.
 void remove_known(const fs::path& dir, std::span<const std::string> names,
-                  const std::vector<std::string>& keep) {
+                  const std::vector<std::string>& keep, const std::vector<fs::path>& inputs) {
   const auto listed = [](const auto& list, const std::string& n) {
     return std::find(list.begin(), list.end(), n) != list.end();
   };
   if (listed(names, kPlotList) && !listed(keep, kPlotList)) io::remove_recorded_plots(dir);
   for (const std::string& n : names) {
-    if (std::find(keep.begin(), keep.end(), n) != keep.end()) continue;
+    if (std::find(keep.begin(), keep.end(), n) != keep.end() || is_input(dir / n, inputs)) continue;
     remove_file(dir / n);
     remove_file(io::partial_path(dir / n));
   }
@@ -137,8 +149,13 @@ std::string status_name(OutputCommand command) {
   return {};
 }
 
-OutputFolder::OutputFolder(fs::path dir, OutputCommand command, bool active)
-    : dir_(std::move(dir)), command_(command), active_(active) {}
+OutputFolder::OutputFolder(fs::path dir, OutputCommand command, bool active,
+                           const std::vector<fs::path>& inputs)
+    : dir_(std::move(dir)), command_(command), active_(active) {
+  for (const fs::path& input : inputs) {
+    if (!input.empty()) inputs_.push_back(canonical_form(input));
+  }
+}
 
 void OutputFolder::claim(const Keep& keep) {
   std::error_code ec;
@@ -146,10 +163,10 @@ void OutputFolder::claim(const Keep& keep) {
   claimed_ = true;
   if (dir_.empty() || !fs::is_directory(dir_, ec)) return;
   if (!claims_folder(command_)) {
-    remove_known(dir_, output_names(command_), keep.names);
+    remove_known(dir_, output_names(command_), keep.names, inputs_);
     return;
   }
-  remove_known(dir_, known_output_names(), keep.names);
+  remove_known(dir_, known_output_names(), keep.names, inputs_);
   fs::remove_all(dir_ / kScratch, ec);
   if (keep.replays) return;
   std::vector<fs::path> replays;
@@ -157,7 +174,7 @@ void OutputFolder::claim(const Keep& keep) {
     if (is_replay_folder(entry)) replays.push_back(entry.path());
   }
   for (const fs::path& r : replays) {
-    remove_known(r, known_output_names(), {});
+    remove_known(r, known_output_names(), {}, inputs_);
     fs::remove(r, ec);  // only when nothing else is left in it
   }
 }
@@ -195,7 +212,10 @@ void OutputFolder::fail(const std::exception_ptr& error) const {
   }
   nlohmann::json result = nullptr;
   for (const std::string& n : output_names(command_)) {
-    if (n == kPlotList || resume_state(command_, n) || !fs::is_regular_file(dir_ / n, ec)) continue;
+    if (n == kPlotList || resume_state(command_, n) || is_input(dir_ / n, inputs_) ||
+        !fs::is_regular_file(dir_ / n, ec)) {
+      continue;
+    }
     if (n == status) {
       std::ifstream in(dir_ / n, std::ios::binary);
       result = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);

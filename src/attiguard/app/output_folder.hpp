@@ -25,17 +25,21 @@ namespace attiguard::app {
 enum class OutputCommand { run, reach, campaign, replay, tune, view, export_aem };
 
 /// The fixed file names `command` may write into its folder (figures, listed in plots.txt, are
-/// not fixed names). The one table of output names: every other list derives from it.
+/// not fixed names). The one table of output names: every other list derives from it
+/// (docs/conventions.md, "Outputs", point 1).
 [[nodiscard]] std::span<const std::string> output_names(OutputCommand command);
 
-/// The union of output_names() over every command: what clean-up removes (with NAME.partial).
+/// The union of output_names() over every command: what clean-up removes (with NAME.partial;
+/// docs/conventions.md, "Outputs", point 1).
 [[nodiscard]] std::span<const std::string> known_output_names();
 
 /// The status file of `command` (its STATUS.partial says why it failed): "summary.json" for run
-/// and replay, "reach.json", "campaign.json", "tune.json"; "" for view and export-aem.
+/// and replay, "reach.json", "campaign.json", "tune.json"; "" for view and export-aem
+/// (docs/conventions.md, "Outputs", point 3).
 [[nodiscard]] std::string status_name(OutputCommand command);
 
-/// What a command keeps of the earlier files in its folder when it claims it.
+/// What a command keeps of the earlier files in its folder when it claims it (`campaign --resume`:
+/// docs/conventions.md, "Outputs", exceptions).
 struct Keep {
   std::vector<std::string> names;  ///< fixed output names left in place (inputs it reads)
   bool replays{false};             ///< keep the replay folders run_K/ (campaign --resume)
@@ -44,20 +48,25 @@ struct Keep {
 /// One command's output folder (docs/conventions.md, "Outputs").
 class OutputFolder {
  public:
-  /// `active` false (an MPI rank other than 0): claim() and fail() touch nothing.
-  OutputFolder(std::filesystem::path dir, OutputCommand command, bool active = true);
+  /// `active` false (an MPI rank other than 0): claim() and fail() touch nothing. `inputs`: the
+  /// files the command reads (its scenario), never removed nor renamed even when they carry an
+  /// output name (`attiguard run D/scenario.resolved.toml --out D`, `tune D/best.toml --out D`).
+  OutputFolder(std::filesystem::path dir, OutputCommand command, bool active = true,
+               const std::vector<std::filesystem::path>& inputs = {});
 
   /// Removes from the folder, when it exists, every earlier output this command will not keep:
   /// for run, reach, campaign, replay and tune every known name (and NAME.partial) not in
   /// `keep`, the figures of DIR/plots.txt, DIR/.scratch and the replay folders run_K/ (their
   /// known files; the folder when nothing else is left); for view and export-aem only their own
-  /// file. Call it before anything is written, before the input is checked.
+  /// file. Call it before anything is written, before the input is checked (docs/conventions.md,
+  /// "Outputs", point 1).
   void claim(const Keep& keep = {});
 
-  /// The scenario kind and file named in the status file.
+  /// The scenario kind and file named in the status file (docs/conventions.md, "Outputs", point 3).
   void set_subject(std::string kind, std::string scenario);
 
-  /// Throws io::Interrupted when SIGINT or SIGTERM arrived: call it before reporting success.
+  /// Throws io::Interrupted when SIGINT or SIGTERM arrived: call it before reporting success
+  /// (docs/conventions.md, "Outputs", point 4).
   void finish() const;
 
   /// The failure `error` (the exception being handled) leaves the folder: untouched before
@@ -65,9 +74,11 @@ class OutputFolder {
   /// (except the campaign's resume state: runs.csv, campaign_identity.json, retained.h5), its
   /// figures are removed and STATUS.partial says why (with the earlier STATUS file's content
   /// under "result" when there was one, e.g. a mission's summary). Then rethrows it — as
-  /// io::Interrupted naming the signal and the folder when a signal arrived meanwhile.
+  /// io::Interrupted naming the signal and the folder when a signal arrived meanwhile
+  /// (docs/conventions.md, "Outputs", points 3 and 4).
   [[noreturn]] void fail(const std::exception_ptr& error) const;
 
+  /// The folder (docs/conventions.md, "Outputs").
   [[nodiscard]] const std::filesystem::path& dir() const noexcept { return dir_; }
 
  private:
@@ -75,6 +86,7 @@ class OutputFolder {
   OutputCommand command_;
   bool active_;
   bool claimed_{false};
+  std::vector<std::filesystem::path> inputs_;  ///< weakly canonical
   std::string kind_;
   std::string scenario_;
 };

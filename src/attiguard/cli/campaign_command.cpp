@@ -244,7 +244,7 @@ void campaign_command(const CampaignArguments& args) {
   const bool replaying = args.replay && *args.replay >= 0;
   app::OutputFolder folder(replaying ? args.out_dir / ("run_" + std::to_string(*args.replay)) : args.out_dir,
                            replaying ? app::OutputCommand::replay : app::OutputCommand::campaign,
-                           world.root() && (replaying || !args.replay));
+                           world.root() && (replaying || !args.replay), {args.scenario});
   if (!args.resume || replaying) folder.claim();
   folder.set_subject({}, args.scenario.string());
   try {

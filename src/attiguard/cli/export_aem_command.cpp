@@ -69,7 +69,7 @@ void export_aem_command(const ExportAemArguments& args) {
   // An --out FILE named *.aem is removed first as well; any other name (a mistyped input file)
   // is only ever replaced by a complete AEM.
   const bool own_file = !args.out.empty();
-  app::OutputFolder folder(args.dir, app::OutputCommand::export_aem);
+  app::OutputFolder folder(args.dir, app::OutputCommand::export_aem, true, {args.scenario});
   if (own_file && args.out.extension() == ".aem") {
     std::error_code ec;
     std::filesystem::remove(args.out, ec);

@@ -89,7 +89,7 @@ void reach_command(const ReachArguments& args) {
   // other than an unproved verdict leaves .partial files and reach.json.partial
   // (docs/conventions.md, "Outputs").
   const parallel::World world = parallel::mpi_world();
-  app::OutputFolder folder(args.out_dir, app::OutputCommand::reach, world.root());
+  app::OutputFolder folder(args.out_dir, app::OutputCommand::reach, world.root(), {args.scenario});
   folder.claim();
   folder.set_subject("reach", args.scenario.string());
   try {

@@ -126,7 +126,7 @@ void tune_command(const TuneArguments& args) {
   // other than "none converged" (exit 4, tune.json is its result) leaves .partial files and
   // tune.json.partial (docs/conventions.md, "Outputs").
   const parallel::World world = parallel::mpi_world();
-  app::OutputFolder folder(args.out_dir, app::OutputCommand::tune, world.root());
+  app::OutputFolder folder(args.out_dir, app::OutputCommand::tune, world.root(), {args.scenario});
   folder.claim();
   folder.set_subject("pet_erg", args.scenario.string());
   try {

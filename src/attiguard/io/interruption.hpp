@@ -22,20 +22,24 @@ class Interrupted : public NumericalError {
 
 /// Installs the handlers of SIGINT and SIGTERM (the `attiguard` program does, at its start). The
 /// first signal sets the flag; a second one while the flag is set ends the process at once by
-/// that signal (the escape from a command that does not reach its next check).
+/// that signal (the escape from a command that does not reach its next check; docs/conventions.md,
+/// "Outputs", point 4).
 void install_interruption_handlers() noexcept;
 
-/// True once SIGINT or SIGTERM was received (always false without the handlers).
+/// True once SIGINT or SIGTERM was received (always false without the handlers;
+/// docs/conventions.md, "Outputs", point 4).
 [[nodiscard]] bool interrupted() noexcept;
 
 /// The flag itself, for loops that stop picking new work when it becomes true
-/// (app::run_many).
+/// (app::run_many; docs/campaigns.md, "Interruption and resume").
 [[nodiscard]] const std::atomic<bool>& interruption_flag() noexcept;
 
-/// "SIGINT" or "SIGTERM": the signal received ("" when none).
+/// "SIGINT" or "SIGTERM": the signal received ("" when none), for the error line
+/// (docs/conventions.md, "Outputs", point 4).
 [[nodiscard]] std::string interruption_signal_name();
 
-/// Throws Interrupted("interrupted by SIGTERM" + `what`) when a signal was received.
+/// Throws Interrupted("interrupted by SIGTERM" + `what`) when a signal was received: a check point
+/// of docs/conventions.md, "Outputs", point 4.
 void throw_if_interrupted(const std::string& what = {});
 
 }  // namespace attiguard::io

@@ -344,6 +344,19 @@ TEST(OutputFolderRefused, ViewThatCannotBeMadeLeavesNoEarlierView) {
   fs::remove_all(work);
 }
 
+// A tune that finds no admissible point (exit 4) writes its tune.json, a result, and leaves no
+// best.toml of an earlier tune beside it.
+TEST(OutputFolderRefused, TuneWithoutAdmissiblePointLeavesNoEarlierBest) {
+  const fs::path work = work_dir();
+  run_command(work, Cmd::tune, "a");
+  ASSERT_FALSE(HasFatalFailure());
+  ASSERT_TRUE(fs::exists(work / "a/run_1/best.toml"));
+  const Ran r = attiguard(work, "tune pet.toml --budget 4 --no-plot --out a/run_1");
+  ASSERT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_EQ(listing(work / "a/run_1"), (std::set<std::string>{"tune.json"}));
+  fs::remove_all(work);
+}
+
 // A command's own input is never removed, even when it carries an output name: the resolved
 // scenario of a folder re-run into that folder, the best.toml of a tune tuned again into it.
 TEST(OutputFolderRefused, InputWithAnOutputNameIsKept) {

@@ -96,7 +96,7 @@ nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
       run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>(doc, options);
   if (summary.contains("failure") && summary["failure"].is_string()) {
     throw NumericalError("mission: " + summary["failure"].get<std::string>() +
-                         " (the twin's results are in the summary)");
+                         " (its summary, with the twin's results, is written)");
   }
   return summary;
 }

@@ -111,15 +111,12 @@ void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
                      sim::AdversarySettings& adversary) {
   const bool adversarial = kind == dynamics::DisturbanceKind::adversarial;
   for (const std::string_view key : {"disturbance_axis_b", "disturbance_period"}) {
-    if (adversarial && t.has(key)) {
-      t.fail(key, "not used by disturbance = \"adversarial\" (its direction is chosen from the "
-                  "state at every update): remove it");
-    }
+    t.used_only_if(key, !adversarial,
+                   "not used by disturbance = \"adversarial\" (its direction is chosen from the "
+                   "state at every update): remove it");
   }
   for (const std::string_view key : {"disturbance_update", "adversary_weight"}) {
-    if (!adversarial && t.has(key)) {
-      t.fail(key, "only used by disturbance = \"adversarial\"");
-    }
+    t.used_only_if(key, adversarial, "only used by disturbance = \"adversarial\"");
   }
   adversary.update = enum_or(t, "disturbance_update", sim::kDisturbanceUpdateNames,
                              sim::DisturbanceUpdate::control);
@@ -225,9 +222,8 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   const TableReader control =
       parse_governor_block(root, sc.params, {"control_period", "margins", "robust_reference_step"});
   const Margins margins = enum_or(control, "margins", kMarginNames, Margins::nominal);
-  if (margins == Margins::nominal && control.has("robust_reference_step")) {
-    control.fail("robust_reference_step", "only with margins = \"robust\"");
-  }
+  control.used_only_if("robust_reference_step", margins == Margins::robust,
+                       "only with margins = \"robust\"");
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
 
   const TableReader body = root.table("body");

@@ -2,6 +2,7 @@
 
 #include "attiguard/scenario/resolved_scenario.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -25,7 +26,17 @@ DefaultsRecorder::~DefaultsRecorder() {
 }
 
 void DefaultsRecorder::record(std::string path, DefaultValue value) {
-  if (t_recorder != nullptr) t_recorder->defaults_.emplace_back(std::move(path), std::move(value));
+  if (t_recorder == nullptr) return;
+  const auto& unused = t_recorder->unused_;
+  if (std::find(unused.begin(), unused.end(), path) != unused.end()) return;
+  t_recorder->defaults_.emplace_back(std::move(path), std::move(value));
+}
+
+void DefaultsRecorder::record_unused(std::string path) {
+  if (t_recorder == nullptr) return;
+  auto& defaults = t_recorder->defaults_;
+  std::erase_if(defaults, [&](const auto& entry) { return entry.first == path; });
+  t_recorder->unused_.push_back(std::move(path));
 }
 
 std::string resolved_toml(const Document& doc,

@@ -22,7 +22,10 @@ inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.toml";
 using DefaultValue = std::variant<double, std::int64_t, bool, std::string>;
 
 /// While alive, collects on its thread every default the TableReader accessors `number_or`,
-/// `integer_or`, `boolean_or` and `string_or` return for an absent key (key path and value).
+/// `integer_or`, `boolean_or` and `string_or` return for an absent key (key path and value),
+/// except the keys the scenario's other settings leave unused (TableReader::used_only_if: the
+/// reader would refuse them if written) and fallbacks outside the key's own rule (a "not set"
+/// marker such as robust_reference_step = 0, which the reader would refuse if written).
 /// Defaults the kinds apply without such an accessor (a whole optional table left out, e.g.
 /// [erg] or an [initial] attitude) are not seen. Recorders do not nest.
 class DefaultsRecorder {
@@ -32,16 +35,20 @@ class DefaultsRecorder {
   DefaultsRecorder(const DefaultsRecorder&) = delete;
   DefaultsRecorder& operator=(const DefaultsRecorder&) = delete;
 
-  /// The defaults recorded so far, in reading order.
+  /// The defaults recorded so far, in reading order, without the unused keys.
   [[nodiscard]] const std::vector<std::pair<std::string, DefaultValue>>& defaults() const noexcept {
     return defaults_;
   }
 
   /// Called by the readers (no effect without a recorder on this thread).
   static void record(std::string path, DefaultValue value);
+  /// Called by TableReader::used_only_if for a key the other settings leave unused: its
+  /// default, recorded before or after, is not one (no effect without a recorder).
+  static void record_unused(std::string path);
 
  private:
   std::vector<std::pair<std::string, DefaultValue>> defaults_;
+  std::vector<std::string> unused_;
 };
 
 /// The TOML text of `doc` with `defaults` inserted at their key paths, headed by a comment

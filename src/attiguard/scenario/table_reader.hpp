@@ -48,6 +48,13 @@ class TableReader {
   /// "unknown key 'kpp' … did you mean 'kp'?" rather than as the required key missing.
   [[nodiscard]] bool has(std::string_view key) const;
 
+  /// Declares `key` (see has()) as used only when `used` (what the table's other settings
+  /// decide, e.g. disturbance_update only with disturbance = "adversarial"). When it is not used:
+  /// a present key is refused with `message` located at it, and an absent key's default is not
+  /// written into the resolved scenario (docs/conventions.md, "Outputs"), which would refuse it.
+  /// The one definition of "this key is used when …" for both.
+  void used_only_if(std::string_view key, bool used, std::string_view message) const;
+
   /// A required number (integers are accepted as numbers).
   [[nodiscard]] double number(std::string_view key, const NumberRule& rule = {}) const;
   /// An optional number, `fallback` when absent.

@@ -34,6 +34,7 @@
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/output_records.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
@@ -59,7 +60,19 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   options.out_dir = dir;
   options.write_files = true;
   io::remove_recorded_plots(dir);
-  const app::RunRecord r = app::run_one(c, k, options);
+  scenario::Document drawn;
+  const app::RunRecord r = app::run_one(c, k, options, &drawn);
+  // The dispersed scenario of run K, every default filled in: `attiguard run` of it flies this
+  // run again (docs/conventions.md, "Outputs"); none for a run whose every draw was rejected.
+  if (r.status == app::RunStatus::rejected) {
+    std::filesystem::remove(dir / scenario::kResolvedScenarioFile);
+  } else {
+    io::write_text(dir, scenario::kResolvedScenarioFile,
+                   scenario::resolve_scenario(drawn, c.handler->check,
+                                              "run " + std::to_string(k) + " (seed " +
+                                                  std::to_string(r.seed) + ") of " +
+                                                  args.scenario.string()));
+  }
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
   std::ofstream(dir / "run.csv", std::ios::binary) << header << '\n' << row << '\n';
@@ -75,7 +88,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
   }
   std::cout << line << '\n';
   std::cout << "Wrote:\n  " << (dir / "run.csv").string() << '\n';
-  for (const char* f : {"trajectory.csv", "summary.json"}) {
+  for (const char* f : {"trajectory.csv", "summary.json", scenario::kResolvedScenarioFile}) {
     if (std::filesystem::exists(dir / f)) std::cout << "  " << (dir / f).string() << '\n';
   }
   if (args.plot && r.status == app::RunStatus::ok) {
@@ -143,6 +156,10 @@ void campaign_command(const CampaignArguments& args) {
     if (!args.resume) std::filesystem::remove(runs_path);
     io::remove_recorded_plots(args.out_dir);
     write_identity(identity_path, identity);
+    // The campaign file with its constant defaults filled in: `attiguard campaign` of it with
+    // the same --runs and --seed gives the same runs.csv (docs/conventions.md, "Outputs").
+    io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
+                   scenario::resolve_campaign(scenario::load_document(args.scenario), c.handler->check));
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
     std::cout << "Campaign " << args.scenario.string() << " (" << c.handler->name << "): "
@@ -216,7 +233,8 @@ void campaign_command(const CampaignArguments& args) {
     return;
   }
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
-            << (args.out_dir / "campaign.json").string() << '\n';
+            << (args.out_dir / "campaign.json").string() << "\n  "
+            << (args.out_dir / scenario::kResolvedScenarioFile).string() << '\n';
   if (retained) {
     retained.reset();  // closes the file
     const auto path = args.out_dir / "retained.h5";

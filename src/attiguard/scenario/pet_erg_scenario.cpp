@@ -157,11 +157,11 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
     t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
            "attitude bias + noise must stay below pi/2 rad, got " + detail::format_number(s.attitude_error_bound()));
   }
-  im.attitude_bias_bound = t.number_or("attitude_bias_bound", s.attitude_bias_b.norm(), NumberRule::non_negative());
+  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{s.attitude_bias_b.norm()}, NumberRule::non_negative());
   if (im.attitude_bias_bound < s.attitude_bias_b.norm()) {
     t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(s.attitude_bias_b.norm()) + " rad");
   }
-  im.rate_bias_bound = t.number_or("rate_bias_bound", s.rate_bias_b.norm(), NumberRule::non_negative());
+  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{s.rate_bias_b.norm()}, NumberRule::non_negative());
   if (im.rate_bias_bound < s.rate_bias_b.norm()) {
     t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(s.rate_bias_b.norm()) + " rad/s");
   }

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "attiguard/core/version.hpp"
+#include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/key_path.hpp"
 
@@ -25,40 +26,51 @@ DefaultsRecorder::~DefaultsRecorder() {
   if (t_recorder == this) t_recorder = nullptr;
 }
 
-void DefaultsRecorder::record(std::string path, DefaultValue value) {
+void DefaultsRecorder::record(std::string path, DefaultValue value, bool derived) {
   if (t_recorder == nullptr) return;
   const auto& unused = t_recorder->unused_;
   if (std::find(unused.begin(), unused.end(), path) != unused.end()) return;
-  t_recorder->defaults_.emplace_back(std::move(path), std::move(value));
+  t_recorder->defaults_.push_back({std::move(path), std::move(value), derived});
 }
 
 void DefaultsRecorder::record_unused(std::string path) {
   if (t_recorder == nullptr) return;
   auto& defaults = t_recorder->defaults_;
-  std::erase_if(defaults, [&](const auto& entry) { return entry.first == path; });
+  std::erase_if(defaults, [&](const RecordedDefault& entry) { return entry.path == path; });
   t_recorder->unused_.push_back(std::move(path));
 }
 
-std::string resolved_toml(const Document& doc,
-                          const std::vector<std::pair<std::string, DefaultValue>>& defaults) {
+std::string resolved_toml(const Document& doc, const std::vector<RecordedDefault>& defaults,
+                          WrittenDefaults which, std::string_view source) {
   Document resolved = doc;
   toml::table& root = root_table(resolved);
-  for (const auto& entry : defaults) {
-    const std::string& path = entry.first;  // a plain reference: lambdas capture it in C++20
+  for (const RecordedDefault& entry : defaults) {
+    if (entry.derived && which == WrittenDefaults::constants_only) continue;
+    const std::string& path = entry.path;  // a plain reference: lambdas capture it in C++20
     if (resolve_key_path(root, path) != nullptr) continue;  // present (read twice): keep it
-    std::visit([&](const auto& v) { assign_key_path(root, path, v); }, entry.second);
+    std::visit([&](const auto& v) { assign_key_path(root, path, v); }, entry.value);
   }
   std::ostringstream out;
-  out << "# " << doc.path.string() << " resolved by attiguard " << version_string
-      << ": every default its readers used is written out\n"
+  out << "# " << (source.empty() ? doc.path.string() : std::string(source))
+      << " resolved by attiguard " << version_string << ": every default its readers used"
+      << (which == WrittenDefaults::every ? "" : " that no dispersed value changes")
+      << " is written out\n"
       << toml::toml_formatter(root) << '\n';
   return out.str();
 }
 
-std::string resolve_scenario(const Document& doc, void (*check)(const Document&)) {
+std::string resolve_scenario(const Document& doc, void (*check)(const Document&),
+                             std::string_view source) {
   const DefaultsRecorder recorder;
   check(doc);
-  return resolved_toml(doc, recorder.defaults());
+  return resolved_toml(doc, recorder.defaults(), WrittenDefaults::every, source);
+}
+
+std::string resolve_campaign(const Document& doc, void (*check)(const Document&)) {
+  const DefaultsRecorder recorder;
+  check(nominal_document(doc));
+  (void)read_dispersions(doc);
+  return resolved_toml(doc, recorder.defaults(), WrittenDefaults::constants_only);
 }
 
 }  // namespace attiguard::scenario

@@ -187,11 +187,21 @@ double TableReader::number(std::string_view key, const NumberRule& rule) const {
 }
 
 double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule) const {
+  return number_or(key, fallback, rule, false);
+}
+
+double TableReader::number_or(std::string_view key, DerivedDefault fallback,
+                              const NumberRule& rule) const {
+  return number_or(key, fallback.value, rule, true);
+}
+
+double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule,
+                              bool derived) const {
   const toml::node* n = take(key);
   if (n == nullptr) {
     // A fallback outside the rule marks "not set": written out, the reader would refuse it.
     if (std::isfinite(fallback) && satisfies(fallback, rule)) {
-      DefaultsRecorder::record(key_path(key), fallback);
+      DefaultsRecorder::record(key_path(key), fallback, derived);
     }
     return fallback;
   }

@@ -36,6 +36,14 @@ struct NumberRule {
   static NumberRule range(double lo, double hi) { return {lo, hi, false, false}; }
 };
 
+/// The fallback of an optional number when it is computed from other values of the scenario
+/// (e.g. attitude_bias_bound = the norm of attitude_bias), not a constant of the schema: the
+/// resolved scenario of a campaign leaves it out (scenario/resolved_scenario.hpp,
+/// RecordedDefault::derived), as each dispersed run derives it again.
+struct DerivedDefault {
+  double value;
+};
+
 /// Reader over one table; sub-tables share the file and the set of keys seen.
 class TableReader {
  public:
@@ -59,6 +67,9 @@ class TableReader {
   [[nodiscard]] double number(std::string_view key, const NumberRule& rule = {}) const;
   /// An optional number, `fallback` when absent.
   [[nodiscard]] double number_or(std::string_view key, double fallback,
+                                 const NumberRule& rule = {}) const;
+  /// An optional number whose fallback is derived from other values (DerivedDefault).
+  [[nodiscard]] double number_or(std::string_view key, DerivedDefault fallback,
                                  const NumberRule& rule = {}) const;
   /// A required integer with bounds.
   [[nodiscard]] long integer(std::string_view key, long min, long max) const;
@@ -111,6 +122,9 @@ class TableReader {
  private:
   struct Shared;
   TableReader(std::shared_ptr<Shared> shared, const toml::table* table, std::string path);
+  /// number_or of either kind of fallback.
+  [[nodiscard]] double number_or(std::string_view key, double fallback, const NumberRule& rule,
+                                 bool derived) const;
   /// Declares `key` as read (see has()) and returns its node, or nullptr when absent.
   const toml::node* take(std::string_view key) const;
   /// Throws the error for an absent required key: "missing required key (expected …)" located at

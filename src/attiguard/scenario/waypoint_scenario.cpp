@@ -96,13 +96,18 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   if (const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
                              : root.optional_table("attitude_control")) {
     declare(*att, {"kp", "ki", "kd", "integral_zone"});
-    sc.gains.kp = paper ? att->number("kp", NumberRule::positive())
-                        : att->number_or("kp", DerivedDefault{craft_gains.kp}, NumberRule::positive());
+    // Derived gains keep their shaping, which no key expresses: their kp and kd are not read as
+    // defaults (the resolved scenario would turn the shaping off by writing them).
+    const bool shaped = !paper && !att->has("kp") && !att->has("kd");
+    sc.gains.kp = paper    ? att->number("kp", NumberRule::positive())
+                  : shaped ? craft_gains.kp
+                           : att->number_or("kp", DerivedDefault{craft_gains.kp}, NumberRule::positive());
     sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
-    sc.gains.kd = paper ? att->number("kd", NumberRule::positive())
-                        : att->number_or("kd", DerivedDefault{craft_gains.kd}, NumberRule::positive());
+    sc.gains.kd = paper    ? att->number("kd", NumberRule::positive())
+                  : shaped ? craft_gains.kd
+                           : att->number_or("kd", DerivedDefault{craft_gains.kd}, NumberRule::positive());
     sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
-    if (!paper && !att->has("kp") && !att->has("kd")) {  // derived gains keep their shaping
+    if (shaped) {  // derived gains keep their shaping
       sc.gains.shaped = craft_gains.shaped;
       sc.gains.shaping = craft_gains.shaping;
       sc.gains.shaping_scale = craft_gains.shaping_scale;

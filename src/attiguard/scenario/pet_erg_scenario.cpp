@@ -273,10 +273,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
                       "control steps");
   }
-  if (const std::optional<TableReader> erg = root.optional_table("erg");
-      erg && sc.params.mode == GovernorMode::pet) {
-    require_countable(*erg, "sampling_period", sc.params.Ts, sc.duration, kMaxRunSteps,
-                      "governor samples");
+  if (sc.params.mode == GovernorMode::pet) {  // [erg] given or left out (its default T_s)
+    require_countable(root.table_or_empty("erg"), "sampling_period", sc.params.Ts, sc.duration,
+                      kMaxRunSteps, "governor samples");
   }
   root.finish();
 

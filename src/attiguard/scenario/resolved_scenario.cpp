@@ -16,6 +16,18 @@ namespace attiguard::scenario {
 
 namespace {
 thread_local DefaultsRecorder* t_recorder = nullptr;
+/// Inserts the tables on `path` that the file left out (a default of an optional table read
+/// through TableReader::table_or_empty, e.g. erg.kappa without [erg]); arrays are not made.
+void add_left_out_tables(toml::table& root, std::string_view path) {
+  const std::vector<KeyStep> steps = split_key_path(path);
+  toml::table* table = &root;
+  for (std::size_t s = 0; s + 1 < steps.size() && table != nullptr; ++s) {
+    if (steps[s].index) return;
+    if (table->get(steps[s].key) == nullptr) table->insert(steps[s].key, toml::table{});
+    table = table->get(steps[s].key)->as_table();
+  }
+}
+
 }  // namespace
 
 DefaultsRecorder::DefaultsRecorder() noexcept {
@@ -48,6 +60,7 @@ std::string resolved_toml(const Document& doc, const std::vector<RecordedDefault
     if (entry.derived && which == WrittenDefaults::constants_only) continue;
     const std::string& path = entry.path;  // a plain reference: lambdas capture it in C++20
     if (resolve_key_path(root, path) != nullptr) continue;  // present (read twice): keep it
+    add_left_out_tables(root, path);
     std::visit([&](const auto& v) { assign_key_path(root, path, v); }, entry.value);
   }
   std::ostringstream out;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,8 @@ struct TableReader::Shared {
   };
   std::string file;
   std::map<const toml::table*, TableState> tables;
+  /// The empty tables standing for tables left out (table_or_empty); a deque keeps them in place.
+  std::deque<toml::table> absent;
 };
 
 namespace {
@@ -366,6 +369,11 @@ std::optional<TableReader> TableReader::optional_table(std::string_view key) con
     return std::nullopt;
   }
   return table(key);
+}
+
+TableReader TableReader::table_or_empty(std::string_view key) const {
+  if (take(key) != nullptr) return table(key);
+  return child(&shared_->absent.emplace_back(), key_path(key));
 }
 
 std::vector<TableReader> TableReader::array_of_tables(std::string_view key) const {

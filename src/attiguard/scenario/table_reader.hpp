@@ -105,6 +105,11 @@ class TableReader {
   [[nodiscard]] TableReader table(std::string_view key) const;
   /// An optional sub-table.
   [[nodiscard]] std::optional<TableReader> optional_table(std::string_view key) const;
+  /// An optional sub-table whose keys all have defaults: the table, or when it is left out a
+  /// reader over an empty table at its key path, so that the defaults are read (and recorded
+  /// for the resolved scenario, scenario/resolved_scenario.hpp) by the same accessors. Its
+  /// errors then name the file without a line.
+  [[nodiscard]] TableReader table_or_empty(std::string_view key) const;
   /// A required non-empty array of tables ([[key]] or key = [{…}, …]).
   [[nodiscard]] std::vector<TableReader> array_of_tables(std::string_view key) const;
 

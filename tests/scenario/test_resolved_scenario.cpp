@@ -59,7 +59,8 @@ TEST(ResolvedScenario, WritesTheDefaultsOfATableLeftOut) {
 TEST(ResolvedScenario, DerivedDefaultsAreLeftOutOfACampaignOnly) {
   const std::string campaign = std::string(kFlightLoop) +
                                "[dispersions]\n\"imperfections.rate_bias\" = { type = \"vector\", "
-                               "distribution = \"uniform\", delta = 0.0005 }\n";
+                               "distribution = \"uniform\", delta = 0.0005 }\n"
+                               "\"control.kp\" = { distribution = \"uniform\", delta = 0.5 }\n";
   const Document doc = parse_document(campaign, "mc.toml");
   // rate_bias_bound defaults to the norm of rate_bias: a dispersed run derives its own.
   EXPECT_TRUE(contains(resolve_scenario(nominal_document(doc), &check_pet_erg), "rate_bias_bound = 0.001"));
@@ -67,6 +68,11 @@ TEST(ResolvedScenario, DerivedDefaultsAreLeftOutOfACampaignOnly) {
   EXPECT_FALSE(contains(resolved, "rate_bias_bound"));
   EXPECT_TRUE(contains(resolved, "torque_quantum = 0.0"));  // a constant default
   EXPECT_TRUE(contains(resolved, "[dispersions]"));
+  // The defaults of the quoted [dispersions] entries (`type`) are not written: the campaign
+  // file still reads (before, `dispersions."control.kp".type` made a table named '"control').
+  const Document again = parse_document(resolved, "mc.resolved.toml");
+  EXPECT_EQ(read_dispersions(again).items.size(), 2u);
+  EXPECT_NO_THROW(check_pet_erg(nominal_document(again)));
 }
 
 }  // namespace

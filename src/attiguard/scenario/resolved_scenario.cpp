@@ -58,6 +58,9 @@ std::string resolved_toml(const Document& doc, const std::vector<RecordedDefault
   toml::table& root = root_table(resolved);
   for (const RecordedDefault& entry : defaults) {
     if (entry.derived && which == WrittenDefaults::constants_only) continue;
+    // A quoted key on the path (an entry of [dispersions], "control.kp" = {…}) is not a key
+    // path split_key_path reads: such a default (a dispersion's `type`) is not written.
+    if (entry.path.find('"') != std::string::npos) continue;
     const std::string& path = entry.path;  // a plain reference: lambdas capture it in C++20
     if (resolve_key_path(root, path) != nullptr) continue;  // present (read twice): keep it
     add_left_out_tables(root, path);
@@ -66,8 +69,9 @@ std::string resolved_toml(const Document& doc, const std::vector<RecordedDefault
   std::ostringstream out;
   out << "# " << (source.empty() ? doc.path.string() : std::string(source))
       << " resolved by attiguard " << version_string << ": every default its readers used"
-      << (which == WrittenDefaults::every ? "" : " that no dispersed value changes")
-      << " is written out\n"
+      << " is written out"
+      << (which == WrittenDefaults::every ? "" : ", but those derived from other values (each dispersed run derives its own)")
+      << '\n'
       << toml::toml_formatter(root) << '\n';
   return out.str();
 }

@@ -41,8 +41,11 @@ enum class WrittenDefaults { every, constants_only };
 /// except the keys the scenario's other settings leave unused (TableReader::used_only_if: the
 /// reader would refuse them if written) and fallbacks outside the key's own rule (a "not set"
 /// marker such as robust_reference_step = 0, which the reader would refuse if written).
-/// Defaults the kinds apply without such an accessor (a whole optional table left out, e.g.
-/// [erg] or an [initial] attitude) are not seen. Recorders do not nest.
+/// A table left out that is read through TableReader::table_or_empty ([erg]) has its defaults
+/// recorded like any other; defaults the kinds apply without such an accessor (an absent
+/// [initial] attitude or omega_b, reach's [partition], [soundness], [output] left out, a
+/// waypoint craft's derived [attitude_control] and [fine_position] left out) are not seen.
+/// Recorders do not nest.
 class DefaultsRecorder {
  public:
   DefaultsRecorder() noexcept;

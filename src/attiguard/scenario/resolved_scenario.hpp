@@ -80,7 +80,7 @@ class DefaultsRecorder {
 [[nodiscard]] std::string resolve_scenario(const Document& doc, void (*check)(const Document&),
                                            std::string_view source = {});
 
-/// The resolved scenario of a campaign file `doc` (docs/campaigns.md): its nominal scenario
+/// The resolved scenario of a campaign file `doc` (docs/conventions.md, "Outputs"): its nominal scenario
 /// (scenario::nominal_document) read with `check` and its [dispersions] and [campaign] tables
 /// read by scenario::read_dispersions, under one recorder; written with the constant defaults
 /// only (WrittenDefaults::constants_only), so that `attiguard campaign` of it draws and runs

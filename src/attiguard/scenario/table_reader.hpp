@@ -38,7 +38,7 @@ struct NumberRule {
 
 /// The fallback of an optional number when it is computed from other values of the scenario
 /// (e.g. attitude_bias_bound = the norm of attitude_bias), not a constant of the schema: the
-/// resolved scenario of a campaign leaves it out (scenario/resolved_scenario.hpp,
+/// resolved scenario of a campaign leaves it out (docs/conventions.md, "Outputs";
 /// RecordedDefault::derived), as each dispersed run derives it again.
 struct DerivedDefault {
   double value;
@@ -107,7 +107,7 @@ class TableReader {
   [[nodiscard]] std::optional<TableReader> optional_table(std::string_view key) const;
   /// An optional sub-table whose keys all have defaults: the table, or when it is left out a
   /// reader over an empty table at its key path, so that the defaults are read (and recorded
-  /// for the resolved scenario, scenario/resolved_scenario.hpp) by the same accessors. Its
+  /// for the resolved scenario: docs/conventions.md, "Outputs") by the same accessors. Its
   /// errors then name the file without a line.
   [[nodiscard]] TableReader table_or_empty(std::string_view key) const;
   /// A required non-empty array of tables ([[key]] or key = [{…}, …]).

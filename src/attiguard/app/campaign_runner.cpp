@@ -87,7 +87,7 @@ scenario::Document dispersed_document(const Campaign& c, Rng& rng, std::vector<d
   return d;
 }
 
-RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
+RunRecord run_one(const Campaign& c, long k, const RunOptions& options, scenario::Document* drawn) {
   RunRecord r;
   r.index = k;
   r.seed = run_seed(c.seed, static_cast<std::uint64_t>(k));
@@ -97,6 +97,7 @@ RunRecord run_one(const Campaign& c, long k, const RunOptions& options) {
     ++r.attempts;
     try {
       doc = dispersed_document(c, rng, r.values);
+      if (drawn != nullptr) *drawn = doc;
       c.handler->check(doc);
       r.reason.clear();
       break;

@@ -65,8 +65,10 @@ struct RunRecord {
 /// Runs run k: draws until the kind's check accepts the scenario (at most plan.max_attempts,
 /// then status rejected), runs it (exceptions, NaN in the summary: status failed). Never
 /// throws for a problem of the run itself. With options.write_files the run writes its
-/// trajectory.csv/summary.json into options.out_dir (replay).
-[[nodiscard]] RunRecord run_one(const Campaign& c, long k, const RunOptions& options);
+/// trajectory.csv/summary.json into options.out_dir (replay). `drawn`, when given, receives the
+/// dispersed scenario of the run (the last draw; the replay resolves it).
+[[nodiscard]] RunRecord run_one(const Campaign& c, long k, const RunOptions& options,
+                                scenario::Document* drawn = nullptr);
 
 /// Header of runs.csv.
 [[nodiscard]] std::vector<std::string> csv_columns(const Campaign& c);

@@ -56,8 +56,18 @@ void replay(const app::Campaign& c, const CampaignArguments& args, const app::Ou
   app::RunOptions options;
   options.out_dir = dir;
   options.write_files = true;
-  const app::RunRecord r = app::run_one(c, k, options);
+  scenario::Document drawn;
+  const app::RunRecord r = app::run_one(c, k, options, &drawn);
   folder.finish();  // a signal during the run: not a row of the campaign
+  // The dispersed scenario of run K, every default filled in: `attiguard run` of it flies this
+  // run again (docs/conventions.md, "Outputs"); none for a run whose every draw was rejected.
+  if (r.status != app::RunStatus::rejected) {
+    io::write_text(dir, scenario::kResolvedScenarioFile,
+                   scenario::resolve_scenario(drawn, c.handler->check,
+                                              "run " + std::to_string(k) + " (seed " +
+                                                  std::to_string(r.seed) + ") of " +
+                                                  args.scenario.string()));
+  }
   const std::string header = join(app::csv_columns(c));
   const std::string row = app::csv_row(c, r);
   io::write_text(dir, "run.csv", header + '\n' + row + '\n');
@@ -73,7 +83,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args, const app::Ou
   }
   std::cout << line << '\n';
   std::cout << "Wrote:\n  " << (dir / "run.csv").string() << '\n';
-  for (const char* f : {"trajectory.csv", "summary.json"}) {
+  for (const char* f : {"trajectory.csv", "summary.json", scenario::kResolvedScenarioFile}) {
     if (std::filesystem::exists(dir / f)) std::cout << "  " << (dir / f).string() << '\n';
   }
   if (args.plot && r.status == app::RunStatus::ok) {
@@ -146,6 +156,10 @@ void campaign_into(const CampaignArguments& args, const parallel::World& world,
   std::optional<campaign::RunsAppender> appender;
   if (world.root()) {
     write_identity(identity_path, identity);
+    // The campaign file with its constant defaults filled in: `attiguard campaign` of it with
+    // the same --runs and --seed gives the same runs.csv (docs/conventions.md, "Outputs").
+    io::write_text(args.out_dir, scenario::kResolvedScenarioFile,
+                   scenario::resolve_campaign(scenario::load_document(args.scenario), c.handler->check));
     if (args.resume && !done.empty()) campaign::write_sorted(runs_path, header, done);
     appender.emplace(runs_path, header);
     std::cout << "Campaign " << args.scenario.string() << " (" << c.handler->name << "): "
@@ -214,7 +228,8 @@ void campaign_into(const CampaignArguments& args, const parallel::World& world,
     folder.finish();
   }
   std::cout << "Wrote:\n  " << runs_path.string() << "\n  "
-            << (args.out_dir / "campaign.json").string() << '\n';
+            << (args.out_dir / "campaign.json").string() << "\n  "
+            << (args.out_dir / scenario::kResolvedScenarioFile).string() << '\n';
   if (retained) {
     retained.reset();  // closes the file
     const auto path = args.out_dir / "retained.h5";

@@ -205,16 +205,15 @@ std::vector<governor::ConeConstraint> parse_cones(const TableReader& root) {
 }
 
 void parse_erg_table(const TableReader& root, governor::GovernorParams& params) {
-  const auto erg = root.optional_table("erg");
-  if (!erg) return;
-  declare(*erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"});
-  params.kappa = erg->number_or("kappa", params.kappa, NumberRule::positive());
-  params.c_gamma = erg->number_or("c_gamma", params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
-  params.Ts = erg->number_or("sampling_period", params.Ts, NumberRule::positive());
-  params.epsilon = erg->number_or("epsilon", params.epsilon, NumberRule::positive());
+  const TableReader erg = root.table_or_empty("erg");  // left out: its defaults, read the same way
+  declare(erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"});
+  params.kappa = erg.number_or("kappa", params.kappa, NumberRule::positive());
+  params.c_gamma = erg.number_or("c_gamma", params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
+  params.Ts = erg.number_or("sampling_period", params.Ts, NumberRule::positive());
+  params.epsilon = erg.number_or("epsilon", params.epsilon, NumberRule::positive());
   params.epsilon_gamma =
-      erg->number_or("epsilon_gamma", params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
-  erg->finish();
+      erg.number_or("epsilon_gamma", params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
+  erg.finish();
 }
 
 TableReader parse_governor_block(const TableReader& root, governor::GovernorParams& params,

@@ -111,15 +111,12 @@ void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
                      sim::AdversarySettings& adversary) {
   const bool adversarial = kind == dynamics::DisturbanceKind::adversarial;
   for (const std::string_view key : {"disturbance_axis_b", "disturbance_period"}) {
-    if (adversarial && t.has(key)) {
-      t.fail(key, "not used by disturbance = \"adversarial\" (its direction is chosen from the "
-                  "state at every update): remove it");
-    }
+    t.used_only_if(key, !adversarial,
+                   "not used by disturbance = \"adversarial\" (its direction is chosen from the "
+                   "state at every update): remove it");
   }
   for (const std::string_view key : {"disturbance_update", "adversary_weight"}) {
-    if (!adversarial && t.has(key)) {
-      t.fail(key, "only used by disturbance = \"adversarial\"");
-    }
+    t.used_only_if(key, adversarial, "only used by disturbance = \"adversarial\"");
   }
   adversary.update = enum_or(t, "disturbance_update", sim::kDisturbanceUpdateNames,
                              sim::DisturbanceUpdate::control);
@@ -160,11 +157,11 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
     t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
            "attitude bias + noise must stay below pi/2 rad, got " + detail::format_number(s.attitude_error_bound()));
   }
-  im.attitude_bias_bound = t.number_or("attitude_bias_bound", s.attitude_bias_b.norm(), NumberRule::non_negative());
+  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{s.attitude_bias_b.norm()}, NumberRule::non_negative());
   if (im.attitude_bias_bound < s.attitude_bias_b.norm()) {
     t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(s.attitude_bias_b.norm()) + " rad");
   }
-  im.rate_bias_bound = t.number_or("rate_bias_bound", s.rate_bias_b.norm(), NumberRule::non_negative());
+  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{s.rate_bias_b.norm()}, NumberRule::non_negative());
   if (im.rate_bias_bound < s.rate_bias_b.norm()) {
     t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(s.rate_bias_b.norm()) + " rad/s");
   }
@@ -225,9 +222,8 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   const TableReader control =
       parse_governor_block(root, sc.params, {"control_period", "margins", "robust_reference_step"});
   const Margins margins = enum_or(control, "margins", kMarginNames, Margins::nominal);
-  if (margins == Margins::nominal && control.has("robust_reference_step")) {
-    control.fail("robust_reference_step", "only with margins = \"robust\"");
-  }
+  control.used_only_if("robust_reference_step", margins == Margins::robust,
+                       "only with margins = \"robust\"");
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
 
   const TableReader body = root.table("body");
@@ -277,10 +273,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
                       "control steps");
   }
-  if (const std::optional<TableReader> erg = root.optional_table("erg");
-      erg && sc.params.mode == GovernorMode::pet) {
-    require_countable(*erg, "sampling_period", sc.params.Ts, sc.duration, kMaxRunSteps,
-                      "governor samples");
+  if (sc.params.mode == GovernorMode::pet) {  // [erg] given or left out (its default T_s)
+    require_countable(root.table_or_empty("erg"), "sampling_period", sc.params.Ts, sc.duration,
+                      kMaxRunSteps, "governor samples");
   }
   root.finish();
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,8 @@ struct TableReader::Shared {
   };
   std::string file;
   std::map<const toml::table*, TableState> tables;
+  /// The empty tables standing for tables left out (table_or_empty); a deque keeps them in place.
+  std::deque<toml::table> absent;
 };
 
 namespace {
@@ -172,6 +175,12 @@ void TableReader::missing(std::string_view key, std::string_view expected) const
 
 bool TableReader::has(std::string_view key) const { return take(key) != nullptr; }
 
+void TableReader::used_only_if(std::string_view key, bool used, std::string_view message) const {
+  if (used) return;
+  if (has(key)) fail(key, message);
+  DefaultsRecorder::record_unused(key_path(key));
+}
+
 double TableReader::number(std::string_view key, const NumberRule& rule) const {
   const toml::node* n = take(key);
   if (n == nullptr) {
@@ -181,9 +190,22 @@ double TableReader::number(std::string_view key, const NumberRule& rule) const {
 }
 
 double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule) const {
+  return number_or(key, fallback, rule, false);
+}
+
+double TableReader::number_or(std::string_view key, DerivedDefault fallback,
+                              const NumberRule& rule) const {
+  return number_or(key, fallback.value, rule, true);
+}
+
+double TableReader::number_or(std::string_view key, double fallback, const NumberRule& rule,
+                              bool derived) const {
   const toml::node* n = take(key);
   if (n == nullptr) {
-    DefaultsRecorder::record(key_path(key), fallback);
+    // A fallback outside the rule marks "not set": written out, the reader would refuse it.
+    if (std::isfinite(fallback) && satisfies(fallback, rule)) {
+      DefaultsRecorder::record(key_path(key), fallback, derived);
+    }
     return fallback;
   }
   return read_number(shared_->file, *n, key_path(key), rule);
@@ -209,7 +231,9 @@ long TableReader::integer(std::string_view key, long min, long max) const {
 
 long TableReader::integer_or(std::string_view key, long fallback, long min, long max) const {
   if (take(key) == nullptr) {
-    DefaultsRecorder::record(key_path(key), static_cast<std::int64_t>(fallback));
+    if (fallback >= min && fallback <= max) {  // else a "not set" marker, as in number_or
+      DefaultsRecorder::record(key_path(key), static_cast<std::int64_t>(fallback));
+    }
     return fallback;
   }
   return integer(key, min, max);
@@ -258,7 +282,9 @@ std::string TableReader::string(std::string_view key,
 std::string TableReader::string_or(std::string_view key, std::string_view fallback,
                                    std::span<const std::string_view> allowed) const {
   if (take(key) == nullptr) {
-    DefaultsRecorder::record(key_path(key), std::string(fallback));
+    if (allowed.empty() || std::find(allowed.begin(), allowed.end(), fallback) != allowed.end()) {
+      DefaultsRecorder::record(key_path(key), std::string(fallback));  // else as in number_or
+    }
     return std::string(fallback);
   }
   return string(key, allowed);
@@ -343,6 +369,11 @@ std::optional<TableReader> TableReader::optional_table(std::string_view key) con
     return std::nullopt;
   }
   return table(key);
+}
+
+TableReader TableReader::table_or_empty(std::string_view key) const {
+  if (take(key) != nullptr) return table(key);
+  return child(&shared_->absent.emplace_back(), key_path(key));
 }
 
 std::vector<TableReader> TableReader::array_of_tables(std::string_view key) const {

@@ -36,6 +36,14 @@ struct NumberRule {
   static NumberRule range(double lo, double hi) { return {lo, hi, false, false}; }
 };
 
+/// The fallback of an optional number when it is computed from other values of the scenario
+/// (e.g. attitude_bias_bound = the norm of attitude_bias), not a constant of the schema: the
+/// resolved scenario of a campaign leaves it out (docs/conventions.md, "Outputs";
+/// RecordedDefault::derived), as each dispersed run derives it again.
+struct DerivedDefault {
+  double value;
+};
+
 /// Reader over one table; sub-tables share the file and the set of keys seen.
 class TableReader {
  public:
@@ -48,10 +56,20 @@ class TableReader {
   /// "unknown key 'kpp' … did you mean 'kp'?" rather than as the required key missing.
   [[nodiscard]] bool has(std::string_view key) const;
 
+  /// Declares `key` (see has()) as used only when `used` (what the table's other settings
+  /// decide, e.g. disturbance_update only with disturbance = "adversarial"). When it is not used:
+  /// a present key is refused with `message` located at it, and an absent key's default is not
+  /// written into the resolved scenario (docs/conventions.md, "Outputs"), which would refuse it.
+  /// The one definition of "this key is used when …" for both.
+  void used_only_if(std::string_view key, bool used, std::string_view message) const;
+
   /// A required number (integers are accepted as numbers).
   [[nodiscard]] double number(std::string_view key, const NumberRule& rule = {}) const;
   /// An optional number, `fallback` when absent.
   [[nodiscard]] double number_or(std::string_view key, double fallback,
+                                 const NumberRule& rule = {}) const;
+  /// An optional number whose fallback is derived from other values (DerivedDefault).
+  [[nodiscard]] double number_or(std::string_view key, DerivedDefault fallback,
                                  const NumberRule& rule = {}) const;
   /// A required integer with bounds.
   [[nodiscard]] long integer(std::string_view key, long min, long max) const;
@@ -87,6 +105,11 @@ class TableReader {
   [[nodiscard]] TableReader table(std::string_view key) const;
   /// An optional sub-table.
   [[nodiscard]] std::optional<TableReader> optional_table(std::string_view key) const;
+  /// An optional sub-table whose keys all have defaults: the table, or when it is left out a
+  /// reader over an empty table at its key path, so that the defaults are read (and recorded
+  /// for the resolved scenario: docs/conventions.md, "Outputs") by the same accessors. Its
+  /// errors then name the file without a line.
+  [[nodiscard]] TableReader table_or_empty(std::string_view key) const;
   /// A required non-empty array of tables ([[key]] or key = [{…}, …]).
   [[nodiscard]] std::vector<TableReader> array_of_tables(std::string_view key) const;
 
@@ -104,6 +127,9 @@ class TableReader {
  private:
   struct Shared;
   TableReader(std::shared_ptr<Shared> shared, const toml::table* table, std::string path);
+  /// number_or of either kind of fallback.
+  [[nodiscard]] double number_or(std::string_view key, double fallback, const NumberRule& rule,
+                                 bool derived) const;
   /// Declares `key` as read (see has()) and returns its node, or nullptr when absent.
   const toml::node* take(std::string_view key) const;
   /// Throws the error for an absent required key: "missing required key (expected …)" located at

@@ -96,13 +96,18 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   if (const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
                              : root.optional_table("attitude_control")) {
     declare(*att, {"kp", "ki", "kd", "integral_zone"});
-    sc.gains.kp = paper ? att->number("kp", NumberRule::positive())
-                        : att->number_or("kp", craft_gains.kp, NumberRule::positive());
+    // Derived gains keep their shaping, which no key expresses: their kp and kd are not read as
+    // defaults (the resolved scenario would turn the shaping off by writing them).
+    const bool shaped = !paper && !att->has("kp") && !att->has("kd");
+    sc.gains.kp = paper    ? att->number("kp", NumberRule::positive())
+                  : shaped ? craft_gains.kp
+                           : att->number_or("kp", DerivedDefault{craft_gains.kp}, NumberRule::positive());
     sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
-    sc.gains.kd = paper ? att->number("kd", NumberRule::positive())
-                        : att->number_or("kd", craft_gains.kd, NumberRule::positive());
+    sc.gains.kd = paper    ? att->number("kd", NumberRule::positive())
+                  : shaped ? craft_gains.kd
+                           : att->number_or("kd", DerivedDefault{craft_gains.kd}, NumberRule::positive());
     sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
-    if (!paper && !att->has("kp") && !att->has("kd")) {  // derived gains keep their shaping
+    if (shaped) {  // derived gains keep their shaping
       sc.gains.shaped = craft_gains.shaped;
       sc.gains.shaping = craft_gains.shaping;
       sc.gains.shaping_scale = craft_gains.shaping_scale;
@@ -130,10 +135,10 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   if (const auto& fine = fine_table) {
     declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
     mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
-                           : fine->number_or("kappa_d", craft_rct.kappa_d, NumberRule::positive());
+                           : fine->number_or("kappa_d", DerivedDefault{craft_rct.kappa_d}, NumberRule::positive());
     // Craft profile: the derived κ_p with the κ_d in force (position control on).
     mp.rct.kappa_p = fine->number_or(
-        "kappa_p", paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy),
+        "kappa_p", DerivedDefault{paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy)},
         NumberRule::non_negative());
     mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
   }
@@ -142,26 +147,26 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
       g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
   mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, !paper);
   mp.pointing_tolerance = g.number_or(
-      "pointing_tolerance", paper ? 1e-6 : guidance::craft_pointing_tolerance(limits), {0.0, 1.0, true, true});
+      "pointing_tolerance", DerivedDefault{paper ? 1e-6 : guidance::craft_pointing_tolerance(limits)}, {0.0, 1.0, true, true});
   mp.braking_margin = g.number_or(
-      "braking_margin", paper ? 1.0 : guidance::craft_braking_margin(limits, mp.cruise_speed),
+      "braking_margin", DerivedDefault{paper ? 1.0 : guidance::craft_braking_margin(limits, mp.cruise_speed)},
       {0.0, 1.0, true, false});
   mp.brake_along_velocity = enum_or(g, "braking_distance", sim::kBrakingDistanceNames, true);
   mp.main_cutoff_speed = g.number_or(
-      "main_cutoff_speed", paper ? 0.02 : guidance::craft_main_cutoff_speed(limits, mp.cruise_speed),
+      "main_cutoff_speed", DerivedDefault{paper ? 0.02 : guidance::craft_main_cutoff_speed(limits, mp.cruise_speed)},
       NumberRule::non_negative());
   mp.replan_distance = g.number_or(
       "replan_distance",
-      paper ? 50.0
+      DerivedDefault{paper ? 50.0
             : guidance::craft_replan_distance(limits, mp.main_cutoff_speed, mp.position_accuracy,
                                               mp.arrival_radius,
-                                              guidance::craft_slew_time(limits, sc.gains)),
+                                              guidance::craft_slew_time(limits, sc.gains))},
       NumberRule::positive());
   mp.brake_speed =
-      g.number_or("brake_speed", guidance::default_brake_speed(mp), NumberRule::non_negative());
+      g.number_or("brake_speed", DerivedDefault{guidance::default_brake_speed(mp)}, NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
   mp.projection.blend_speed = g.number_or(
-      "projection_blend_speed", paper ? 0.05 : guidance::craft_projection_blend_speed(limits),
+      "projection_blend_speed", DerivedDefault{paper ? 0.05 : guidance::craft_projection_blend_speed(limits)},
       NumberRule::positive());
   const double full_deg =
       g.number_or("projection_full_angle_deg", 89.0, {0.0, 90.0, false, true});
@@ -169,7 +174,7 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   mp.flip_timing = enum_or(g, "flip_timing", sim::kFlipTimingNames,
                            paper ? guidance::FlipTiming::immediate : guidance::FlipTiming::braking_point);
   mp.flip_lead_time = g.number_or(
-      "flip_lead_time", paper ? 60.0 : 1.5 * guidance::craft_slew_time(limits, sc.gains),
+      "flip_lead_time", DerivedDefault{paper ? 60.0 : 1.5 * guidance::craft_slew_time(limits, sc.gains)},
       NumberRule::non_negative());
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",

@@ -9,6 +9,8 @@
 
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/parallel/thread_limit.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
 
@@ -61,6 +63,16 @@ std::string step_hint(const scenario::Document& doc, const integrate::Integrator
                     four_digits(limit) + " s of this inertia and these gains (lambda_max ~ " +
                     four_digits(fastest) + " 1/s): use integrator = \"rkmk_dp54\" or step <= " +
                     four_digits(limit));
+}
+
+/// "FILE: --threads: cannot start worker thread K of N (reason): …" (docs/errors.md, "No abort").
+std::string thread_start_message(const parallel::ThreadStartError& e, const std::string& scenario) {
+  std::string m = prefix(scenario) + "--threads: " + e.what() +
+                  ": the system limits the threads of this process (ulimit -u) or the memory of their stacks (ulimit -s, ulimit -v); ";
+  m += e.started() > 1 ? "use --threads " + std::to_string(e.started()) + " or fewer"
+                       : std::string("use --threads 1");
+  return m + " (the flag takes at most " + std::to_string(parallel::thread_limit()) +
+         " on this machine)";
 }
 
 std::string hint_of(const scenario::Document& doc) {
@@ -117,6 +129,8 @@ Failure describe_failure(const std::exception_ptr& error, const std::string& sce
       std::rethrow_exception(error);
     } catch (const Error& e) {
       return {e.code(), e.what()};
+    } catch (const parallel::ThreadStartError& e) {
+      return {ExitCode::invalid_input, thread_start_message(e, scenario)};
     } catch (const std::bad_alloc&) {
       return {ExitCode::invalid_input, prefix(scenario) + "out of memory: " + kWhatIsLarge};
     } catch (const std::length_error& e) {

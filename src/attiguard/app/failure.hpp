@@ -3,7 +3,8 @@
 /// What a program prints and returns for an exception that reached its top (docs/errors.md,
 /// docs/architecture.md "Errors"): attiguard's error family maps to its exit code; running out
 /// of memory or asking for a container larger than possible (std::bad_alloc,
-/// std::length_error) is an input problem (exit 2) whose message says what was too large; any
+/// std::length_error) is an input problem (exit 2) whose message says what was too large; a
+/// worker thread the system refuses (parallel::ThreadStartError) is exit 2 naming --threads; any
 /// other exception is an internal error (exit 3).
 
 #include <exception>

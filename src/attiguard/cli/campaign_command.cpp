@@ -34,6 +34,7 @@
 #include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/output_records.hpp"
+#include "attiguard/parallel/thread_limit.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
 namespace attiguard::cli {
@@ -95,7 +96,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args) {
 
 void campaign_command(const CampaignArguments& args) {
   const parallel::World world = parallel::mpi_world();
-  if (args.threads < 1) throw InputError("--threads: must be at least 1");
+  parallel::check_thread_count(args.threads);  // 1 to 4 per hardware thread (thread_limit.hpp)
   if ((args.view || args.aem) && !args.replay) {
     throw InputError("--view and --aem go with --replay K (the trajectory of one run); view a "
                      "whole campaign with `attiguard view DIR`");

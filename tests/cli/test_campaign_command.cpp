@@ -60,7 +60,7 @@ TEST(CampaignCommand, ThreadsTheSystemRefusesEndWithExitTwoNamingTheFlag) {
                                  std::string(ATTIGUARD_CLI_PATH) + "' " + cmd + " --threads 8 --out '" +
                                  dir.string() + "')");
     EXPECT_EQ(r.exit_code, 2) << cmd << ": " << r.err;
-    expect_one_line(r, {"--threads: cannot start worker thread ", " of 8", "use --threads "});
+    expect_one_line(r, {"--threads: cannot start worker thread ", "use --threads "});
   }
   fs::remove_all(dir);
 #endif

@@ -1,6 +1,7 @@
 #include "attiguard/app/failure.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -65,16 +66,6 @@ std::string step_hint(const scenario::Document& doc, const integrate::Integrator
                     four_digits(limit));
 }
 
-/// "FILE: --threads: cannot start worker thread K of N (reason): …" (docs/errors.md, "No abort").
-std::string thread_start_message(const parallel::ThreadStartError& e, const std::string& scenario) {
-  std::string m = prefix(scenario) + "--threads: " + e.what() +
-                  ": the system limits the threads of this process (ulimit -u) or the memory of their stacks (ulimit -s, ulimit -v); ";
-  m += e.started() > 1 ? "use --threads " + std::to_string(e.started()) + " or fewer"
-                       : std::string("use --threads 1");
-  return m + " (the flag takes at most " + std::to_string(parallel::thread_limit()) +
-         " on this machine)";
-}
-
 std::string hint_of(const scenario::Document& doc) {
   const std::string kind = scenario::scenario_kind(doc);
   if (kind == "rigid_body") {
@@ -123,6 +114,17 @@ std::string located_numerical_failure(const std::string& message,
   }
 }
 
+std::string thread_start_advice(const parallel::ThreadStartError& e, const std::string& setting) {
+  std::string m = std::string(e.what()) +
+                  ": the system limits the threads of this process (ulimit -u) or the memory of "
+                  "their stacks (ulimit -s, ulimit -v); use " + setting +
+                  std::to_string(std::max(1L, e.started())) + " or fewer";
+  if (setting == "--threads ") {
+    m += " (the flag takes at most " + std::to_string(parallel::thread_limit()) + " on this machine)";
+  }
+  return m;
+}
+
 Failure describe_failure(const std::exception_ptr& error, const std::string& scenario) noexcept {
   try {
     try {
@@ -130,7 +132,7 @@ Failure describe_failure(const std::exception_ptr& error, const std::string& sce
     } catch (const Error& e) {
       return {e.code(), e.what()};
     } catch (const parallel::ThreadStartError& e) {
-      return {ExitCode::invalid_input, thread_start_message(e, scenario)};
+      return {ExitCode::invalid_input, prefix(scenario) + "--threads: " + thread_start_advice(e, "--threads ")};
     } catch (const std::bad_alloc&) {
       return {ExitCode::invalid_input, prefix(scenario) + "out of memory: " + kWhatIsLarge};
     } catch (const std::length_error& e) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 #include "attiguard/scenario/document.hpp"
 
 namespace attiguard::app {
@@ -25,6 +26,13 @@ struct Failure {
 /// named in the out-of-memory message.
 [[nodiscard]] Failure describe_failure(const std::exception_ptr& error,
                                        const std::string& scenario) noexcept;
+
+/// "cannot start worker thread K of N (reason): the system limits …; use SETTING M or fewer"
+/// for a worker thread the system refused (M: the threads that did start, at least 1); SETTING
+/// is "--threads " (campaign, tune: then the flag's limit follows) or "threads = " (the
+/// `[partition] threads` key of reach). docs/errors.md, "No abort".
+[[nodiscard]] std::string thread_start_advice(const parallel::ThreadStartError& e,
+                                              const std::string& setting);
 
 /// The key most likely responsible for a numerical failure (a diverging run) of the scenario
 /// `doc`, located and with a hint (docs/errors.md, "Numerical failures"), or "" when none stands

@@ -16,6 +16,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/outcome_line.hpp"
+#include "attiguard/app/failure.hpp"
 #include "attiguard/app/reach_run.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
@@ -56,7 +57,11 @@ void reach_command(const ReachArguments& args) {
   // plots and view; the failure is rethrown after them.
   std::exception_ptr unproved;
   try {
-    summary = app::run_reach(sc, args.out_dir, world);
+    try {
+      summary = app::run_reach(sc, args.out_dir, world);
+    } catch (const parallel::ThreadStartError& e) {  // located at the key that asked for them
+      scenario::fail_in_table(doc, "partition", "threads", app::thread_start_advice(e, "threads = "));
+    }
   } catch (const VerificationFailure&) {
     if (!world.root()) throw;
     unproved = std::current_exception();

@@ -10,6 +10,7 @@
 #include "attiguard/app/failure.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 
 namespace attiguard::app {
 namespace {
@@ -60,6 +61,22 @@ TEST(Failure, LengthErrorFromAHugeContainerIsInputError) {
   const Failure f = describe_failure(caught, "big.toml");
   EXPECT_EQ(f.code, ExitCode::invalid_input);
   EXPECT_EQ(f.message.rfind("big.toml: a size is too large", 0), 0U) << f.message;
+}
+
+TEST(Failure, AThreadTheSystemRefusedIsInputErrorNamingTheSetting) {
+  const parallel::ThreadStartError e(2, 8, "Resource temporarily unavailable");
+  const Failure f = failure_of(e);
+  EXPECT_EQ(f.code, ExitCode::invalid_input);
+  EXPECT_EQ(f.message.rfind("s.toml: --threads: cannot start worker thread 3 of 8 (Resource temporarily "
+                            "unavailable): the system limits the threads",
+                            0),
+            0U)
+      << f.message;
+  EXPECT_NE(f.message.find("use --threads 2 or fewer (the flag takes at most "), std::string::npos) << f.message;
+  EXPECT_EQ(thread_start_advice(parallel::ThreadStartError(0, 4, "x"), "threads = ").substr(0, 33),
+            "cannot start worker thread 1 of 4");
+  EXPECT_NE(thread_start_advice(parallel::ThreadStartError(0, 4, "x"), "threads = ").find("use threads = 1 or fewer"),
+            std::string::npos);
 }
 
 TEST(Failure, AnythingElseIsAnInternalError) {

@@ -5,7 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "attiguard/app/aem_export.hpp"
+#include "attiguard/app/result_summary.hpp"
 #include "attiguard/app/view_page.hpp"
 #include "attiguard/core/errors.hpp"
 #include "cli_runner.hpp"
@@ -65,6 +69,63 @@ TEST(ViewPage, AFolderWithoutResultsOrTrajectoryIsInvalidInput) {
   EXPECT_THROW((void)write_view(empty, "console.log(1);"), InputError);
   EXPECT_THROW((void)read_viewer_bundle(empty / "no_bundle.js"), InputError);
   fs::remove_all(empty);
+}
+
+/// The message of `f()`'s InputError, "" when it does not throw one.
+template <class F>
+std::string refusal(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ViewPage, RefusesWhatExportAemRefusesWithTheSameMessage) {
+  // Each fault of a run folder: the view's message is the AEM export's (one reader for both).
+  const std::vector<std::pair<std::string, std::string>> trajectory_faults{
+      {"nan", "t,q_w,q_x,q_y,q_z\n0,1,0,0,0\n0.1,nan,0,0,0\n"},
+      {"torn", "t,q_w,q_x,q_y,q_z\n0,1,0,0,0\n0.1,1,0\n"},
+      {"extra", "t,q_w,q_x,q_y,q_z\n0,1,0,0,0,7\n"},
+      {"text", "t,q_w,q_x,q_y,q_z\n0,1,0,abc,0\n"}};
+  for (const auto& [name, text] : trajectory_faults) {
+    const fs::path dir = flight_dir("view_fault_" + name, 3);
+    std::ofstream(dir / "trajectory.csv", std::ios::trunc) << text;
+    const std::string view = refusal([&] { (void)view_data(dir); });
+    EXPECT_NE(view.find("trajectory.csv:"), std::string::npos) << name << ": " << view;
+    EXPECT_EQ(view, refusal([&] { (void)export_aem(dir, io::AemMetadata{}); })) << name;
+    fs::remove_all(dir);
+  }
+  const std::vector<std::pair<std::string, std::string>> summary_faults{
+      {"array", "[]"}, {"kind", R"({"kind": "warp_drive"})"}, {"nokind", R"({"name": "x"})"},
+      {"torn", R"({"kind": "pet_)"}, {"name", R"({"kind": "pet_erg", "name": 3})"}};
+  for (const auto& [name, text] : summary_faults) {
+    const fs::path dir = flight_dir("view_summary_" + name, 3);
+    std::ofstream(dir / "summary.json", std::ios::trunc) << text;
+    const std::string view = refusal([&] { (void)view_data(dir); });
+    EXPECT_NE(view.find("summary.json: "), std::string::npos) << name << ": " << view;
+    EXPECT_EQ(view, refusal([&] { (void)read_run_summary(dir / "summary.json"); })) << name;
+    fs::remove_all(dir);
+  }
+}
+
+TEST(ViewPage, CampaignRunsAreReadByTheResumeReader) {
+  const fs::path dir = test::fresh_dir("view_runs");
+  std::ofstream(dir / "campaign.json") << R"({"runs_requested": 2})";
+  std::ofstream(dir / "runs.csv") << "run,seed,attempts,status,reason,violation,x\n0,18446744073709551615,1,ok,,0,1.5\n"
+                                     "1,2,1,failed,\"diverged, at t = 3\",,\n";
+  const nlohmann::json d = view_data(dir);
+  EXPECT_EQ(d["series"]["runs"]["rows_total"], 2);
+  EXPECT_EQ(d["series"]["runs"]["data"]["seed"][0], "18446744073709551615");
+  EXPECT_EQ(d["series"]["runs"]["data"]["reason"][1], "diverged, at t = 3");
+  EXPECT_TRUE(d["series"]["runs"]["data"]["x"][1].is_null());
+  std::ofstream(dir / "runs.csv", std::ios::app) << "2,3,1,ok,,0,nan\n";
+  const std::string m = refusal([&] { (void)view_data(dir); });
+  EXPECT_NE(m.find("runs.csv:4: column x: 'nan' is not a finite number"), std::string::npos) << m;
+  std::ofstream(dir / "campaign.json", std::ios::trunc) << "[]";
+  EXPECT_NE(refusal([&] { (void)view_data(dir); }).find("campaign.json: expected a JSON object"), std::string::npos);
+  fs::remove_all(dir);
 }
 
 }  // namespace

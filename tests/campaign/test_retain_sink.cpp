@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include "attiguard/campaign/retain_sink.hpp"
 #include "attiguard/core/errors.hpp"
@@ -27,6 +29,33 @@ TEST(RetainSink, KeepsTheFirstRowAtOrAfterEachMultipleOfTheInterval) {
   }
   RetainSink missing({{"nope"}, 1.0});
   EXPECT_THROW(missing.begin({"t", "a"}), InputError);
+}
+
+TEST(RetainSink, RowsThatSkipARetainedTimeAreRefusedNotStampedWithIt) {
+  // Rows every 1 s, retain_interval 0.2 s: sample 1 would be the row at t = 1 stamped 0.2 s.
+  RetainSink sink({{"a"}, 0.2});
+  sink.begin({"t", "a"});
+  sink.row(std::array<double, 2>{0.0, 1.0});
+  try {
+    sink.row(std::array<double, 2>{1.0, 2.0});
+    FAIL() << "a row at t = 1 s was kept as the sample of t = 0.2 s";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("[campaign] retain_interval: no trajectory row at the retained time t = 0.2 s", 0), 0u) << m;
+    EXPECT_NE(m.find("rows around it are at t = 0 s and 1 s"), std::string::npos) << m;
+  }
+  // Not a multiple: rows every 0.5 s, interval 0.75 s.
+  RetainSink odd({{"a"}, 0.75});
+  odd.begin({"t", "a"});
+  odd.row(std::array<double, 2>{0.0, 0.0});
+  odd.row(std::array<double, 2>{0.5, 0.0});
+  EXPECT_THROW(odd.row(std::array<double, 2>{1.0, 0.0}), InputError);
+  // A multiple: rows every 0.5 s, interval 1 s keeps t = 0, 1, 2 at their own rows.
+  RetainSink twice({{"a"}, 1.0});
+  twice.begin({"t", "a"});
+  for (int i = 0; i <= 4; ++i) twice.row(std::array<double, 2>{0.5 * i, 10.0 * i});
+  ASSERT_EQ(twice.samples(), 3u);
+  EXPECT_EQ(twice.values(), (std::vector<double>{0.0, 20.0, 40.0}));
 }
 
 }  // namespace

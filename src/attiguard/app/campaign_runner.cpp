@@ -5,13 +5,13 @@
 #include <cstdio>
 #include <mutex>
 #include <string_view>
-#include <thread>
 
 #include "attiguard/campaign/csv_format.hpp"
 #include "attiguard/campaign/retain_sink.hpp"
 #include "attiguard/campaign/seed.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/one_line.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 
 namespace attiguard::app {
 
@@ -66,6 +66,10 @@ Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,
   try {
     summary = c.handler->run(c.nominal, options);
   } catch (const InputError& e) {
+    constexpr std::string_view kInterval = "[campaign] retain_interval: ";
+    if (const std::string_view what = e.what(); what.starts_with(kInterval)) {
+      scenario::fail_in_table(doc, "campaign", "retain_interval", what.substr(kInterval.size()));
+    }
     if (std::string_view(e.what()).starts_with("[campaign] retain")) {
       throw InputError(path.string() + ": " + e.what());
     }
@@ -183,25 +187,25 @@ void run_many(const Campaign& c, const std::vector<long>& indices, int threads,
               const std::filesystem::path& scratch, const std::atomic<bool>& stop,
               const std::function<void(const RunRecord&)>& on_done) {
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
   std::mutex done_mutex;
-  auto work = [&](int worker) {
+  auto work = [&](long worker) {
     RunOptions options;
     options.out_dir = scratch / ("worker" + std::to_string(worker));
     options.write_files = false;
-    for (std::size_t i = next++; i < indices.size() && !stop.load(); i = next++) {
-      const RunRecord r = run_one(c, indices[i], options);
-      std::lock_guard<std::mutex> lock(done_mutex);
-      on_done(r);
+    for (std::size_t i = next++; i < indices.size() && !stop.load() && !failed.load(); i = next++) {
+      try {
+        const RunRecord r = run_one(c, indices[i], options);
+        std::lock_guard<std::mutex> lock(done_mutex);
+        on_done(r);
+      } catch (...) {  // out of memory, a runs.csv that cannot be written: the others stop too
+        failed.store(true);
+        throw;  // rethrown to the caller by run_workers
+      }
     }
   };
-  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(indices.size())));
-  if (workers == 1) {
-    work(0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (int w = 0; w < workers; ++w) pool.emplace_back(work, w);
-  for (auto& t : pool) t.join();
+  // A thread the system refuses is a ThreadStartError before any run (parallel/worker_pool.hpp).
+  parallel::run_workers(std::max(1L, std::min<long>(threads, static_cast<long>(indices.size()))), work);
 }
 
 }  // namespace attiguard::app

@@ -1,6 +1,7 @@
 #include "attiguard/app/failure.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -9,6 +10,8 @@
 
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/parallel/thread_limit.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
 #include "attiguard/scenario/rigid_body_scenario.hpp"
 
@@ -111,12 +114,25 @@ std::string located_numerical_failure(const std::string& message,
   }
 }
 
+std::string thread_start_advice(const parallel::ThreadStartError& e, const std::string& setting) {
+  std::string m = std::string(e.what()) +
+                  ": the system limits the threads of this process (ulimit -u) or the memory of "
+                  "their stacks (ulimit -s, ulimit -v); use " + setting +
+                  std::to_string(std::max(1L, e.started())) + " or fewer";
+  if (setting == "--threads ") {
+    m += " (the flag takes at most " + std::to_string(parallel::thread_limit()) + " on this machine)";
+  }
+  return m;
+}
+
 Failure describe_failure(const std::exception_ptr& error, const std::string& scenario) noexcept {
   try {
     try {
       std::rethrow_exception(error);
     } catch (const Error& e) {
       return {e.code(), e.what()};
+    } catch (const parallel::ThreadStartError& e) {
+      return {ExitCode::invalid_input, prefix(scenario) + "--threads: " + thread_start_advice(e, "--threads ")};
     } catch (const std::bad_alloc&) {
       return {ExitCode::invalid_input, prefix(scenario) + "out of memory: " + kWhatIsLarge};
     } catch (const std::length_error& e) {

@@ -3,13 +3,15 @@
 /// What a program prints and returns for an exception that reached its top (docs/errors.md,
 /// docs/architecture.md "Errors"): attiguard's error family maps to its exit code; running out
 /// of memory or asking for a container larger than possible (std::bad_alloc,
-/// std::length_error) is an input problem (exit 2) whose message says what was too large; any
+/// std::length_error) is an input problem (exit 2) whose message says what was too large; a
+/// worker thread the system refuses (parallel::ThreadStartError) is exit 2 naming --threads; any
 /// other exception is an internal error (exit 3).
 
 #include <exception>
 #include <string>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 #include "attiguard/scenario/document.hpp"
 
 namespace attiguard::app {
@@ -24,6 +26,13 @@ struct Failure {
 /// named in the out-of-memory message.
 [[nodiscard]] Failure describe_failure(const std::exception_ptr& error,
                                        const std::string& scenario) noexcept;
+
+/// "cannot start worker thread K of N (reason): the system limits …; use SETTING M or fewer"
+/// for a worker thread the system refused (M: the threads that did start, at least 1); SETTING
+/// is "--threads " (campaign, tune: then the flag's limit follows) or "threads = " (the
+/// `[partition] threads` key of reach). docs/errors.md, "No abort".
+[[nodiscard]] std::string thread_start_advice(const parallel::ThreadStartError& e,
+                                              const std::string& setting);
 
 /// The key most likely responsible for a numerical failure (a diverging run) of the scenario
 /// `doc`, located and with a hint (docs/errors.md, "Numerical failures"), or "" when none stands

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <atomic>
 #include <numeric>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 
 namespace attiguard::app {
 
@@ -115,7 +115,7 @@ std::vector<TunePoint> evaluate_tune_batch(const scenario::Document& nominal,
   mine.points.assign(mine.positions.size(), TunePoint{});
   // Worker w of this rank takes the next candidate of the share; a throw is kept, not raised.
   std::atomic<std::size_t> next{0};
-  const auto work = [&](int worker) {
+  const auto work = [&](long worker) {
     const std::filesystem::path dir = scratch / ("worker" + std::to_string(worker));
     for (std::size_t k = next++; k < mine.positions.size(); k = next++) {
       const auto& values = candidates[static_cast<std::size_t>(mine.positions[k])];
@@ -126,14 +126,8 @@ std::vector<TunePoint> evaluate_tune_batch(const scenario::Document& nominal,
       }
     }
   };
-  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(mine.positions.size())));
-  if (workers == 1) {
-    work(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (int w = 0; w < workers; ++w) pool.emplace_back(work, w);
-    for (auto& t : pool) t.join();
-  }
+  // A thread the system refuses is a ThreadStartError before any point (parallel/worker_pool.hpp).
+  parallel::run_workers(std::max(1L, std::min<long>(threads, static_cast<long>(mine.positions.size()))), work);
   std::vector<TunePoint> out(candidates.size());
   std::vector<std::string> failures(candidates.size());
   const auto place = [&](TuneBatchShare&& s) {

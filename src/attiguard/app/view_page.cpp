@@ -5,16 +5,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "attiguard/app/result_summary.hpp"
 #include "attiguard/campaign/csv_format.hpp"
 #include "attiguard/campaign/envelopes.hpp"
 #include "attiguard/campaign/retained_file.hpp"
+#include "attiguard/campaign/runs_file.hpp"
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/csv_reader.hpp"
+#include "attiguard/io/json_reader.hpp"
 #include "attiguard/io/partial_file.hpp"
 
 namespace attiguard::app {
@@ -31,25 +36,22 @@ std::optional<std::string> slurp(const fs::path& path) {
   return ss.str();
 }
 
-json read_json_file(const fs::path& path) {
-  const auto text = slurp(path);
-  if (!text) throw InputError("cannot read " + path.string());
-  json j = json::parse(*text, nullptr, false);
-  if (j.is_discarded()) throw InputError(path.string() + ": not valid JSON");
-  return j;
+/// A number for the page: rounded to 9 significant digits, null when not finite.
+json rounded(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return std::strtod(buf, nullptr);
 }
 
-/// A CSV cell for the page: a number rounded to 9 significant digits, null for an empty field
-/// or a non-finite number, the text otherwise (runs.csv status, reason, outcome).
+/// A runs.csv cell for the page: a number rounded to 9 significant digits, null for an empty
+/// field, the text otherwise (status, reason, outcome: campaign::read_runs_table checked the rest).
 json cell(std::string_view text) {
   if (text.empty()) return nullptr;
   double v = 0.0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc{} || r.ptr != text.data() + text.size()) return std::string(text);
-  if (!std::isfinite(v)) return nullptr;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return std::strtod(buf, nullptr);
+  return rounded(v);
 }
 
 /// Which rows of a series are shown.
@@ -61,62 +63,87 @@ struct Selection {
   double filter_below{0.0};
 };
 
-/// The series of a CSV file (column-major), rows decimated by `sel`; the last row is always
-/// kept. Absent file: nullopt.
-std::optional<json> read_series(const fs::path& path, std::size_t max_rows, Selection sel = {}) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::string line;
-  std::vector<std::string> columns;
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    if (columns.empty()) {
-      columns = campaign::csv_split(line);
-      continue;
-    }
-    rows.push_back(campaign::csv_split(line));
-  }
-  std::optional<std::size_t> filter;
-  for (std::size_t i = 0; i < columns.size(); ++i) {
-    if (!sel.filter_column.empty() && columns[i] == sel.filter_column) filter = i;
-  }
-  std::vector<std::size_t> kept_all;
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    if (filter && (rows[r].size() <= *filter || std::strtod(rows[r][*filter].c_str(), nullptr) >= sel.filter_below)) {
-      continue;
-    }
-    kept_all.push_back(r);
-  }
-  std::size_t stride = sel.stride;
-  if (max_rows > 0 && kept_all.size() > max_rows) stride = (kept_all.size() + max_rows - 1) / max_rows;
-  std::vector<std::size_t> kept;
-  for (std::size_t k = 0; k < kept_all.size(); k += stride) kept.push_back(kept_all[k]);
-  if (!kept_all.empty() && kept.back() != kept_all.back()) kept.push_back(kept_all.back());
-
-  json data = json::object();
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    json values = json::array();
-    const bool text = columns[c] == "seed";  // 64-bit seeds: exact as text, not as a double
-    for (std::size_t r : kept) {
-      if (c >= rows[r].size()) {
-        values.push_back(nullptr);
-      } else {
-        values.push_back(text ? json(rows[r][c]) : cell(rows[r][c]));
-      }
-    }
-    data[columns[c]] = std::move(values);
-  }
+/// The page's record of a series: {"file", "columns", "rows_total", "rows_selected",
+/// "rows_shown", "stride", "data": {COLUMN: [...]}}.
+json series_record(const fs::path& path, const std::vector<std::string>& columns, std::size_t total,
+                   std::size_t selected, std::size_t shown, std::size_t stride, json data) {
   json s;
   s["file"] = path.filename().string();
   s["columns"] = columns;
-  s["rows_total"] = rows.size();
-  s["rows_selected"] = kept_all.size();
-  s["rows_shown"] = kept.size();
+  s["rows_total"] = total;
+  s["rows_selected"] = selected;
+  s["rows_shown"] = shown;
   s["stride"] = stride;
   s["data"] = std::move(data);
   return s;
+}
+
+/// The stride that shows at most `max_rows` (0: all) of `selected` rows.
+std::size_t stride_for(std::size_t selected, std::size_t max_rows, std::size_t stride) {
+  if (max_rows > 0 && selected > max_rows) return (selected + max_rows - 1) / max_rows;
+  return stride;
+}
+
+/// The series of a numeric CSV file (column-major), read with the strict reader of export-aem
+/// (io::CsvStream) in two passes of constant memory, rows decimated by `sel`; the last selected
+/// row is always kept. Absent file: nullopt.
+std::optional<json> read_series(const fs::path& path, std::size_t max_rows, Selection sel = {}) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::nullopt;
+  std::vector<double> row;
+  std::size_t total = 0;
+  std::size_t selected = 0;
+  std::optional<std::size_t> filter;
+  const auto passes = [&](const std::vector<double>& r) {
+    return !filter || r[*filter] < sel.filter_below;
+  };
+  {
+    io::CsvStream first(path);
+    for (std::size_t i = 0; i < first.columns().size(); ++i) {
+      if (!sel.filter_column.empty() && first.columns()[i] == sel.filter_column) filter = i;
+    }
+    while (first.next(row)) {
+      ++total;
+      if (passes(row)) ++selected;
+    }
+  }
+  const std::size_t stride = stride_for(selected, max_rows, sel.stride);
+  io::CsvStream second(path);
+  const std::vector<std::string> columns = second.columns();
+  std::vector<json> values(columns.size(), json::array());
+  std::size_t k = 0;  // position among the selected rows
+  std::size_t shown = 0;
+  while (second.next(row)) {
+    if (!passes(row)) continue;
+    if (k % stride == 0 || k + 1 == selected) {
+      for (std::size_t c = 0; c < columns.size(); ++c) values[c].push_back(rounded(row[c]));
+      ++shown;
+    }
+    ++k;
+  }
+  json data = json::object();
+  for (std::size_t c = 0; c < columns.size(); ++c) data[columns[c]] = std::move(values[c]);
+  return series_record(path, columns, total, selected, shown, stride, std::move(data));
+}
+
+/// The series of DIR/runs.csv, read with the strict reader of --resume
+/// (campaign::read_runs_table). Absent file: nullopt.
+std::optional<json> read_runs_series(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::nullopt;
+  const campaign::RunsTable table = campaign::read_runs_table(path);
+  std::vector<json> values(table.columns.size(), json::array());
+  for (const auto& [index, line] : table.rows) {
+    const std::vector<std::string> f = campaign::csv_split(line);
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      // 64-bit seeds: exact as text, not as a double
+      values[c].push_back(table.columns[c] == "seed" ? json(f[c]) : cell(f[c]));
+    }
+  }
+  json data = json::object();
+  for (std::size_t c = 0; c < table.columns.size(); ++c) data[table.columns[c]] = std::move(values[c]);
+  const std::size_t n = table.rows.size();
+  return series_record(path, table.columns, n, n, n, 1, std::move(data));
 }
 
 void add_series(json& series, const fs::path& dir, const char* file, std::size_t max_rows,
@@ -140,11 +167,7 @@ std::string script_safe(std::string_view text) {
 /// A series of numbers for the page (9 significant digits, null for NaN).
 json numbers(const std::vector<double>& v) {
   json out = json::array();
-  for (double x : v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", x);
-    out.push_back(cell(buf));
-  }
+  for (double x : v) out.push_back(rounded(x));
   return out;
 }
 
@@ -187,8 +210,8 @@ json view_data(const fs::path& dir) {
   json series = json::object();
   if (fs::is_regular_file(dir / "campaign.json", ec)) {
     page["kind"] = "campaign";
-    page["summary"] = read_json_file(dir / "campaign.json");
-    add_series(series, dir, "runs.csv", 0);
+    page["summary"] = io::read_json_object(dir / "campaign.json");
+    if (auto runs = read_runs_series(dir / "runs.csv")) series["runs"] = std::move(*runs);
     json runs = json::array();  // replayed runs with their own view
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       const std::string n = entry.path().filename().string();
@@ -203,7 +226,7 @@ json view_data(const fs::path& dir) {
     if (fs::is_regular_file(dir / "retained.h5", ec)) page["envelopes"] = envelopes_json(dir / "retained.h5");
   } else if (fs::is_regular_file(dir / "reach.json", ec)) {
     page["kind"] = "reach";
-    page["summary"] = read_json_file(dir / "reach.json");
+    page["summary"] = io::read_json_object(dir / "reach.json");
     add_series(series, dir, "trajectory.csv", kViewMaxRows);
     add_series(series, dir, "boundary.csv", 0);
     add_series(series, dir, "tube.csv", kViewMaxRows);
@@ -213,8 +236,8 @@ json view_data(const fs::path& dir) {
     few.filter_below = 30;  // 30 sampled trajectories are drawn (docs/viewer.md)
     add_series(series, dir, "samples.csv", 0, few);
   } else if (fs::is_regular_file(dir / "summary.json", ec)) {
-    page["summary"] = read_json_file(dir / "summary.json");
-    page["kind"] = page["summary"].value("kind", "unknown");
+    page["summary"] = read_run_summary(dir / "summary.json");  // the reader of export-aem
+    page["kind"] = page["summary"]["kind"];
     add_series(series, dir, "trajectory.csv", kViewMaxRows);
   } else {
     throw InputError(dir.string() + ": no summary.json, reach.json or campaign.json (expected the "
@@ -224,7 +247,8 @@ json view_data(const fs::path& dir) {
     throw InputError((dir / "trajectory.csv").string() + ": not found (the view shows the run's "
                                                          "trajectory; a campaign's runs have one after --replay K)");
   }
-  page["name"] = page["summary"].value("name", dir.filename().string());
+  const auto name = page["summary"].find("name");
+  page["name"] = name != page["summary"].end() && name->is_string() ? *name : json(dir.filename().string());
   page["series"] = std::move(series);
   page["source_dir"] = dir.filename().string();
   return page;
@@ -254,7 +278,13 @@ std::string read_viewer_bundle(const fs::path& bundle_path) {
 }
 
 fs::path write_view(const fs::path& dir, std::string_view bundle) {
-  const json data = view_data(dir);
+  json data;
+  try {
+    data = view_data(dir);
+  } catch (const std::bad_alloc&) {  // not the scenario's memory: the results' (failure.cpp)
+    throw InputError(dir.string() + ": out of memory reading the results for the view (the files "
+                                    "are larger than this machine can hold in memory)");
+  }
   const fs::path out = dir / "view.html";
   {
     std::ofstream f(io::partial_path(out), std::ios::binary | std::ios::trunc);

@@ -1,5 +1,7 @@
 #include "attiguard/campaign/retain_sink.hpp"
 
+#include <cstdio>
+
 #include "attiguard/core/errors.hpp"
 
 namespace attiguard::campaign {
@@ -8,6 +10,7 @@ void RetainSink::begin(const std::vector<std::string>& columns) {
   index_.clear();
   kept_.assign(plan_.columns.size(), {});
   times_.clear();
+  previous_t_ = 0.0;
   bool have_t = false;
   for (std::size_t i = 0; i < columns.size(); ++i) {
     if (columns[i] == "t") {
@@ -33,7 +36,22 @@ void RetainSink::begin(const std::vector<std::string>& columns) {
 void RetainSink::row(std::span<const double> values) {
   const double t = values[t_index_];
   const double next = static_cast<double>(times_.size()) * plan_.interval;
-  if (t < next - 1e-9 * plan_.interval) return;
+  const double tolerance = 1e-9 * plan_.interval;
+  if (t < next - tolerance) {
+    previous_t_ = t;
+    return;
+  }
+  if (t > next + tolerance) {
+    // No row at t_k: its value would be stamped with a time it does not have.
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "[campaign] retain_interval: no trajectory row at the retained time t = %.9g s "
+                  "(the rows around it are at t = %.9g s and %.9g s): retain_interval = %.9g s "
+                  "must be a multiple of the spacing of the trajectory's rows (output_interval)",
+                  next, previous_t_, t, plan_.interval);
+    throw InputError(text);
+  }
+  previous_t_ = t;
   times_.push_back(next);
   for (std::size_t c = 0; c < index_.size(); ++c) kept_[c].push_back(values[index_[c]]);
 }

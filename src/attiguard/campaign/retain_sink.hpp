@@ -1,8 +1,10 @@
 #pragma once
 /// @file retain_sink.hpp
 /// A row sink that keeps the retained columns of one run at t_k = k · interval
-/// (docs/campaigns.md, "Retained time series"): the first row with t ≥ t_k (to within 10⁻⁹ of
-/// the interval) gives sample k.
+/// (docs/campaigns.md, "Retained time series"): the row at t = t_k (to within 10⁻⁹ of the
+/// interval) gives sample k. A run whose rows skip a t_k (retain_interval below the row spacing,
+/// or no multiple of it) throws InputError "[campaign] retain_interval: no trajectory row at the
+/// retained time …", never a sample stamped with a time it does not have.
 
 #include <cstddef>
 #include <span>
@@ -32,6 +34,7 @@ class RetainSink final : public io::RowSink {
   RetainPlan plan_;
   std::vector<std::size_t> index_;
   std::size_t t_index_{0};
+  double previous_t_{0.0};  ///< t of the row before, for the message
   std::vector<double> times_;
   std::vector<std::vector<double>> kept_;  ///< per column
 };

@@ -35,6 +35,7 @@
 #include "attiguard/app/output_folder.hpp"
 #include "attiguard/io/interruption.hpp"
 #include "attiguard/io/output_records.hpp"
+#include "attiguard/parallel/thread_limit.hpp"
 #include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/work_limits.hpp"
 
@@ -103,7 +104,7 @@ void replay(const app::Campaign& c, const CampaignArguments& args, const app::Ou
 /// The campaign (or the replay) into `folder`.
 void campaign_into(const CampaignArguments& args, const parallel::World& world,
                    app::OutputFolder& folder) {
-  if (args.threads < 1) throw InputError("--threads: must be at least 1");
+  parallel::check_thread_count(args.threads);  // 1 to 4 per hardware thread (thread_limit.hpp)
   if ((args.view || args.aem) && !args.replay) {
     throw InputError("--view and --aem go with --replay K (the trajectory of one run); view a "
                      "whole campaign with `attiguard view DIR`");

@@ -13,6 +13,7 @@
 #include "attiguard/app/output_folder.hpp"
 #include "attiguard/io/interruption.hpp"
 #include "attiguard/io/partial_file.hpp"
+#include "attiguard/app/result_summary.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/ephemeris_table.hpp"
@@ -20,13 +21,13 @@
 namespace attiguard::cli {
 namespace {
 
-/// The scenario name of DIR/summary.json ("SPACECRAFT" when absent).
+/// The scenario name of DIR/summary.json, read by the reader of `attiguard view`
+/// (app/result_summary.hpp); "SPACECRAFT" when there is no summary.json or it has no name.
 std::string summary_name(const std::filesystem::path& dir) {
-  std::ifstream in(dir / "summary.json");
-  if (!in) return "SPACECRAFT";
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_object() && j.contains("name") && j["name"].is_string()) return j["name"].get<std::string>();
-  return "SPACECRAFT";
+  std::error_code ec;
+  if (!std::filesystem::exists(dir / "summary.json", ec)) return "SPACECRAFT";
+  const nlohmann::json j = app::read_run_summary(dir / "summary.json");
+  return j.contains("name") ? j["name"].get<std::string>() : "SPACECRAFT";
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "attiguard/parallel/mpi_world.hpp"
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/output_folder.hpp"
+#include "attiguard/app/failure.hpp"
 #include "attiguard/app/reach_run.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
@@ -59,7 +60,11 @@ void reach_into(const ReachArguments& args, const parallel::World& world, app::O
   // reach.json.partial saying why (app/output_folder.hpp).
   std::exception_ptr unproved;
   try {
-    summary = app::run_reach(sc, args.out_dir, world);
+    try {
+      summary = app::run_reach(sc, args.out_dir, world);
+    } catch (const parallel::ThreadStartError& e) {  // located at the key that asked for them
+      scenario::fail_in_table(doc, "partition", "threads", app::thread_start_advice(e, "threads = "));
+    }
   } catch (const VerificationFailure&) {
     if (!world.root()) throw;
     unproved = std::current_exception();

@@ -17,6 +17,8 @@
 #include "attiguard/cli/output_dir.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/parallel/mpi_world.hpp"
+#include "attiguard/parallel/thread_limit.hpp"
+#include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document_edit.hpp"
 #include "attiguard/scenario/tune_table.hpp"
@@ -24,6 +26,25 @@
 namespace attiguard::cli {
 
 namespace {
+
+/// The most runs `--budget` / `[tune] budget` ask for (docs/errors.md, "No abort"): every run is
+/// a full simulation kept in memory and listed in tune.json; 10⁵ runs take hours already.
+constexpr long kTuneBudgetLimit = 100000;
+
+/// InputError naming the flag or the `[tune] budget` key when the budget is beyond the limit.
+void check_budget(const TuneArguments& args, const scenario::TuneTable& table,
+                  const scenario::Document& loaded) {
+  const auto beyond = [](long budget) {
+    return std::to_string(budget) + " runs are more than the limit " +
+           std::to_string(kTuneBudgetLimit) +
+           " (each is a full simulation, kept in memory and listed in tune.json): use a smaller budget";
+  };
+  if (args.budget) {
+    if (*args.budget > kTuneBudgetLimit) throw InputError("--budget: " + beyond(*args.budget));
+  } else if (table.budget && *table.budget > kTuneBudgetLimit) {
+    scenario::fail_in_table(loaded, "tune", "budget", beyond(*table.budget));
+  }
+}
 
 /// The search settings: each flag given, else its `[tune]` key, else the default.
 app::TuneSettings tune_settings(const TuneArguments& args, const scenario::TuneTable& table,
@@ -68,6 +89,8 @@ void tune_into(const TuneArguments& args, const parallel::World& world, app::Out
   app::run_on_every_rank([&] {
     const scenario::Document loaded = scenario::load_document(args.scenario);
     table = scenario::read_tune_table(loaded);
+    parallel::check_thread_count(args.threads);  // 1 to 4 per hardware thread (thread_limit.hpp)
+    check_budget(args, table, loaded);
     // A campaign scenario is tuned at its nominal values.
     nominal = loaded.has_top_level("dispersions") ? scenario::nominal_document(loaded) : loaded;
     s = tune_settings(args, table, nominal);

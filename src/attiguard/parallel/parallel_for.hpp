@@ -1,17 +1,20 @@
 #pragma once
 /// @file parallel_for.hpp
-/// parallel_for over [0, n) with std::thread workers; the first exception is rethrown.
+/// parallel_for over [0, n) with std::thread workers (worker_pool.hpp); the first exception
+/// is rethrown, a thread the system refuses is a ThreadStartError, never std::terminate.
 
 #include <algorithm>
 #include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
+
+#include "attiguard/parallel/worker_pool.hpp"
 
 namespace attiguard::parallel {
 
 /// Runs fn(i) for i in [0, n) on `threads` workers (0: hardware concurrency, at most n).
+/// Throws ThreadStartError (worker_pool.hpp) when a worker thread cannot be created.
 template <class Fn>
 void parallel_for(long n, int threads, Fn&& fn) {
   if (n <= 0) return;
@@ -20,7 +23,7 @@ void parallel_for(long n, int threads, Fn&& fn) {
   std::atomic<long> next{0};
   std::exception_ptr error;
   std::mutex error_mutex;
-  auto work = [&]() {
+  auto work = [&](long) {
     for (long i = next++; i < n; i = next++) {
       try {
         fn(i);
@@ -31,13 +34,7 @@ void parallel_for(long n, int threads, Fn&& fn) {
       }
     }
   };
-  if (workers == 1) {
-    work();
-  } else {
-    std::vector<std::thread> pool;
-    for (long w = 0; w < workers; ++w) pool.emplace_back(work);
-    for (auto& t : pool) t.join();
-  }
+  run_workers(workers, work);
   if (error) std::rethrow_exception(error);
 }
 

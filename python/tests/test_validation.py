@@ -413,7 +413,7 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
                       {"axis_b": Arg(_const([0.0, 0.0, 1.0]), hostile_axis),
                        "direction_i": Arg(_const([0.0, 1.0, 0.0]), hostile_axis),
                        "half_angle_deg": Arg(_const(OMIT), hostile_second_angle, True),
-                     "half_angle_rad": Arg(lambda rng: rng.uniform(0.1, 2.5), hostile_nonnegative, True)  # 0: the CLI's rule,
+                     "half_angle_rad": Arg(lambda rng: rng.uniform(0.1, 2.5), hostile_nonnegative, True),  # 0: the CLI's rule
                        "delta_offset": Arg(_pos(0.01, 0.1), hostile_nonnegative, True),
                        "zeta_offset": Arg(_pos(0.01, 0.1), hostile_nonnegative, True),
                        "repulsive_gain": Arg(_pos(0.5, 2.0), hostile_positive, True)}, True),

@@ -66,6 +66,8 @@ def _value(v: Any, where: str, open_: list) -> str:
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, int):
+        if not -2**63 <= v < 2**63:  # TOML integers are 64-bit
+            raise TomlValueError(f"{where}: integer {str(v)[:40]} is beyond the 64-bit range of a scenario integer")
         return str(v)
     if isinstance(v, float):
         if not math.isfinite(v):  # a scenario file refuses nan and inf: say so here, by key

@@ -165,6 +165,18 @@ class PyGovernor {
   double last_t_{0.0};
 };
 
+/// The state arguments (R, omega_b, R_g) of the governor's stateless evaluations, checked.
+struct State {
+  Mat3 R;
+  Vec3 omega_b;
+  Mat3 R_g;
+};
+State checked_state(const Mat3& R, const Vec3& w, const Mat3& R_g, const char* label) {
+  return State{scenario::checked_rotation_matrix(R, "R", label),
+               scenario::checked_vector3(w, "omega_b", label),
+               scenario::checked_rotation_matrix(R_g, "R_g", label)};
+}
+
 std::vector<double> margins_of(const GovernorOutput& o) {
   return std::vector<double>(o.margins.begin(), o.margins.begin() + o.cone_count);
 }
@@ -177,7 +189,9 @@ void bind_governor(py::module_& m) {
       .def_readonly("axis_b", &ConeConstraint::axis_b)
       .def_readonly("direction_i", &ConeConstraint::direction_i)
       .def_readonly("theta_c", &ConeConstraint::theta_c)
-      .def("margin", [](const ConeConstraint& c, const Mat3& R) { return governor::pointing_margin(c, R); },
+      .def("margin", [](const ConeConstraint& c, const Mat3& R) {
+             return governor::pointing_margin(c, scenario::checked_rotation_matrix(R, "R", "Cone.margin()"));
+           },
            py::arg("R"), "a_cᵀ R a_b − cos θ_c (≥ 0: constraint (2b) holds).")
       .def("__repr__", [](const ConeConstraint& c) {
         return "Cone(theta_c=" + std::to_string(c.theta_c) + ")";
@@ -205,17 +219,40 @@ void bind_governor(py::module_& m) {
 
   m.def("pd_torque",
         [](const Mat3& R, const Vec3& w, const Mat3& R_g, double kp, double kd) {
-          return control::pd_torque(R, w, R_g, control::PdGains{kp, kd});
+          constexpr const char* kLabel = "pd_torque()";
+          const Mat3 R_ok = scenario::checked_rotation_matrix(R, "R", kLabel);
+          const Vec3 w_ok = scenario::checked_vector3(w, "omega_b", kLabel);
+          const Mat3 R_g_ok = scenario::checked_rotation_matrix(R_g, "R_g", kLabel);
+          const double kp_ok = scenario::checked_number(kp, "kp", true, kLabel);
+          const double kd_ok = scenario::checked_number(kd, "kd", true, kLabel);
+          return control::pd_torque(R_ok, w_ok, R_g_ok, control::PdGains{kp_ok, kd_ok});
         },
         py::arg("R"), py::arg("omega_b"), py::arg("R_g"), py::arg("kp"), py::arg("kd"),
         "PD law (3) of the PET-ERG paper: τ = k_p sk(RᵀR_g)^∨ − k_d ω.");
 
   py::class_<dynamics::RigidBody>(m, "RigidBody", "Rigid body: J ω̇ = Jω × ω + τ, Ṙ = R ω̂.")
-      .def(py::init<const Mat3&>(), py::arg("J"))
+      .def(py::init([](const Mat3& J) {
+             try {
+               return dynamics::RigidBody(J);  // the constructor's inertia check (SetupError)
+             } catch (const InputError& e) {
+               throw InputError(std::string("RigidBody(): J: ") + e.what());
+             }
+           }),
+           py::arg("J"), "J symmetric positive definite, finite, triangle inequality (ValueError).")
       .def_property_readonly("J", &dynamics::RigidBody::inertia)
-      .def("angular_acceleration", &dynamics::RigidBody::angular_acceleration, py::arg("omega_b"),
-           py::arg("tau_b"), "ω̇ = J⁻¹(Jω × ω + τ) (Euler's equation, PET-ERG paper (1)).")
-      .def("kinetic_energy", &dynamics::RigidBody::kinetic_energy, py::arg("omega_b"));
+      .def("angular_acceleration",
+           [](const dynamics::RigidBody& b, const Vec3& w, const Vec3& tau) {
+             constexpr const char* kLabel = "RigidBody.angular_acceleration()";
+             return b.angular_acceleration(scenario::checked_vector3(w, "omega_b", kLabel),
+                                           scenario::checked_vector3(tau, "tau_b", kLabel));
+           },
+           py::arg("omega_b"), py::arg("tau_b"),
+           "ω̇ = J⁻¹(Jω × ω + τ) (Euler's equation, PET-ERG paper (1)); finite arguments.")
+      .def("kinetic_energy",
+           [](const dynamics::RigidBody& b, const Vec3& w) {
+             return b.kinetic_energy(scenario::checked_vector3(w, "omega_b", "RigidBody.kinetic_energy()"));
+           },
+           py::arg("omega_b"), "½ ωᵀJω; omega_b finite.");
 
   py::class_<GovernorOutput>(m, "GovernorOutput", "Everything the PET-ERG knows at one instant.")
       .def_readonly("tau_b", &GovernorOutput::tau_b)
@@ -255,17 +292,30 @@ void bind_governor(py::module_& m) {
            "Refuses a call before reset(), time going backwards, a non-rotation R or R_d and a "
            "non-finite omega_b (ValueError naming the argument).")
       .def("evaluate", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g,
-                          const Mat3& R_d, bool flag) { return g.governor().evaluate(R, w, R_g, R_d, flag); },
+                          const Mat3& R_d, const py::object& flag_arg) {
+             if (!py::isinstance<py::bool_>(flag_arg)) {
+               throw py::type_error("Governor.evaluate(): flag: must be True or False, got " +
+                                    py::str(py::type::of(flag_arg).attr("__name__")).cast<std::string>());
+             }
+             const bool flag = flag_arg.cast<bool>();
+             const State x = checked_state(R, w, R_g, "Governor.evaluate()");
+             return g.governor().evaluate(x.R, x.omega_b, x.R_g,
+                                          scenario::checked_rotation_matrix(R_d, "R_d", "Governor.evaluate()"), flag);
+           },
            py::arg("R"), py::arg("omega_b"), py::arg("R_g"), py::arg("R_d"), py::arg("flag"),
            "Stateless evaluation of (3)-(6) at one state.")
       .def("lyapunov", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
-             return g.governor().lyapunov(R, w, R_g);
+             const State x = checked_state(R, w, R_g, "Governor.lyapunov()");
+             return g.governor().lyapunov(x.R, x.omega_b, x.R_g);
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
            "V(R, ω, R_g) = ½ωᵀJω + k_p φ(RᵀR_g) (Sec. III-A).")
-      .def("gamma", [](const PyGovernor& g, const Mat3& R_g) { return g.governor().gamma(R_g); },
+      .def("gamma", [](const PyGovernor& g, const Mat3& R_g) {
+             return g.governor().gamma(scenario::checked_rotation_matrix(R_g, "R_g", "Governor.gamma()"));
+           },
            py::arg("R_g"), "Γ(R_g) (Sec. III-B.1); Γ_W with robust margins (docs/pet-erg.md, section 13).")
       .def("level", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
-             return g.governor().level(R, w, R_g);
+             const State x = checked_state(R, w, R_g, "Governor.level()");
+             return g.governor().level(x.R, x.omega_b, x.R_g);
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"),
            "The level compared with Γ: V, or W = V − ε ωᵀJ sk(RᵀR_g)^∨ with robust margins "
            "(docs/pet-erg.md, section 13).")
@@ -283,7 +333,8 @@ void bind_governor(py::module_& m) {
         return d;
       }, "The robust margin (docs/pet-erg.md, section 13) as a dict, or None with the nominal margins.")
       .def("trigger_condition", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
-             return g.governor().trigger_condition(R, w, R_g);
+             const State x = checked_state(R, w, R_g, "Governor.trigger_condition()");
+             return g.governor().trigger_condition(x.R, x.omega_b, x.R_g);
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"), "Trigger (5): Γ(R_g) − c_Γ V ≥ 0.")
       .def_property_readonly("reference", [](const PyGovernor& g) { return g.governor().reference(); })
       .def_property_readonly("trigger_flag", [](const PyGovernor& g) { return g.governor().trigger_flag(); })

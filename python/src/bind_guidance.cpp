@@ -94,21 +94,29 @@ py::dict command_dict(const guidance::MissionCommand& c) {
 void bind_guidance(py::module_& m) {
   py::class_<control::QuaternionPid>(m, "QuaternionPid", "Quaternion PID (27) of the waypoint paper.")
       .def(py::init([](double kp, double ki, double kd) {
+             constexpr const char* kLabel = "QuaternionPid()";
              control::QuaternionPidGains g;
-             g.kp = kp;
-             g.ki = ki;
-             g.kd = kd;
+             g.kp = scenario::checked_number(kp, "kp", false, kLabel);
+             g.ki = scenario::checked_number(ki, "ki", false, kLabel);
+             g.kd = scenario::checked_number(kd, "kd", false, kLabel);
              return control::QuaternionPid(g);
            }),
            py::arg("kp") = 20.0, py::arg("ki") = 2.0, py::arg("kd") = 20.0)
       .def("step",
            [](control::QuaternionPid& pid, const Quat& q_ib, const Vec3& w, const Quat& q_id,
               const Vec3& w_d, double dt) {
-             const auto out = pid.step(q_ib, w, q_id, w_d, dt);
+             constexpr const char* kLabel = "QuaternionPid.step()";
+             const Quat q_ib_ok = scenario::checked_unit_quaternion(q_ib, "q_ib", kLabel);
+             const Vec3 w_ok = scenario::checked_vector3(w, "omega_b", kLabel);
+             const Quat q_id_ok = scenario::checked_unit_quaternion(q_id, "q_id", kLabel);
+             const Vec3 w_d_ok = scenario::checked_vector3(w_d, "omega_d_d", kLabel);
+             const double dt_ok = scenario::checked_number(dt, "dt", true, kLabel);
+             const auto out = pid.step(q_ib_ok, w_ok, q_id_ok, w_d_ok, dt_ok);
              return out.tau_b;
            },
            py::arg("q_ib"), py::arg("omega_b"), py::arg("q_id"), py::arg("omega_d_d"), py::arg("dt"),
-           "One sample of (27): returns the torque command τ_b [N·m].")
+           "One sample of (27): returns the torque command τ_b [N·m]. Unit quaternions (1e-9), "
+           "finite rates, dt finite and > 0 (ValueError naming the argument).")
       .def("reset", &control::QuaternionPid::reset);
 
   py::class_<OwnedMission>(m, "Mission",
@@ -119,12 +127,13 @@ void bind_guidance(py::module_& m) {
            py::arg("kd") = 20.0)
       .def("step",
            [](OwnedMission& o, const Mat3& R, const Vec3& w, const Vec3& p, const Vec3& v, double dt) {
+             constexpr const char* kLabel = "Mission.step()";
              guidance::MissionInputs in;
-             in.R_ib = R;
-             in.omega_b = w;
-             in.p_i = p;
-             in.v_i = v;
-             in.dt = dt;
+             in.R_ib = scenario::checked_rotation_matrix(R, "R", kLabel);
+             in.omega_b = scenario::checked_vector3(w, "omega_b", kLabel);
+             in.p_i = scenario::checked_vector3(p, "p_i", kLabel);
+             in.v_i = scenario::checked_vector3(v, "v_i", kLabel);
+             in.dt = scenario::checked_number(dt, "dt", true, kLabel);
              return command_dict(o.mission->step(in));
            },
            py::arg("R"), py::arg("omega_b"), py::arg("p_i"), py::arg("v_i"), py::arg("dt"),

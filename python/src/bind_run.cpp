@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -33,42 +34,92 @@ namespace {
 /// The label of a dict scenario in messages.
 constexpr const char* kDictLabel = "<dict>";
 
-/// A Python value of a scenario dict as JSON (bool before int: bool is an int in Python; numpy
-/// arrays and scalars through tolist()). Throws InputError naming the key path otherwise.
-nlohmann::json json_of(const py::handle& v, const std::string& where) {
-  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
-  if (py::isinstance<py::int_>(v)) return v.cast<long long>();
-  if (py::isinstance<py::float_>(v)) return v.cast<double>();
-  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
-  if (v.is_none()) {
-    throw InputError(std::string(kDictLabel) + ": " + where + ": a scenario value cannot be None");
-  }
-  if (py::isinstance<py::dict>(v) || py::hasattr(v, "items")) {
-    nlohmann::json out = nlohmann::json::object();
-    for (const auto& item : py::reinterpret_borrow<py::object>(v).attr("items")()) {
-      const py::tuple kv = item.cast<py::tuple>();
-      const std::string key = py::str(kv[0]).cast<std::string>();
-      out[key] = json_of(kv[1], where.empty() ? key : where + "." + key);
+/// The limits of a scenario dict (docs/python.md, "Validation"): a scenario file never needs
+/// more than a few levels of tables and arrays (docs/scenario-format.md), so a deeper value is a
+/// mistake, refused before it can exhaust the stack; and a value the dict reaches again from
+/// inside itself (a cycle) is refused before it can exhaust memory. The count bounds shared
+/// sub-values (x = [x0, x0], nested): a tree of that many values is far beyond any scenario.
+constexpr std::size_t kMaxDictDepth = 64;
+constexpr std::size_t kMaxDictValues = 1000000;
+
+/// Converts a scenario dict into JSON value by value, with the limits above.
+class DictReader {
+ public:
+  /// A Python value of a scenario dict as JSON (bool before int: bool is an int in Python;
+  /// numpy arrays and scalars through tolist()). Throws InputError naming the key path otherwise.
+  nlohmann::json json_of(const py::handle& v, const std::string& where) {
+    if (++values_ > kMaxDictValues) {
+      fail(where, "more than " + std::to_string(kMaxDictValues) +
+                      " values: beyond the limit of a scenario dict (docs/python.md, \"Validation\")");
     }
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+    if (py::isinstance<py::int_>(v)) {
+      try {
+        return v.cast<long long>();
+      } catch (const py::cast_error&) {
+        fail(where, "integer " + py::str(v).cast<std::string>().substr(0, 40) +
+                        " is beyond the 64-bit range of a scenario integer");
+      }
+    }
+    if (py::isinstance<py::float_>(v)) return v.cast<double>();
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if (v.is_none()) fail(where, "a scenario value cannot be None");
+    const bool table = py::isinstance<py::dict>(v) || py::hasattr(v, "items");
+    const bool array = !table && !py::hasattr(v, "tolist") &&
+                       (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v));
+    if (py::hasattr(v, "tolist") && !table) return json_of(v.attr("tolist")(), where);  // numpy
+    if (!table && !array) {
+      fail(where, "a scenario value cannot be " +
+                      py::str(py::type::of(v).attr("__name__")).cast<std::string>());
+    }
+    // Entering a table or an array: the depth and the cycle check on the open containers.
+    if (open_.size() >= kMaxDictDepth) {
+      fail(where, "nested deeper than " + std::to_string(kMaxDictDepth) +
+                      " tables/arrays: beyond the limit of a scenario dict (docs/python.md, \"Validation\")");
+    }
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (open_[i].first == v.ptr()) {
+        fail(where, "refers back to " + (open_[i].second.empty() ? std::string("the scenario dict itself")
+                                                                 : "its enclosing value " + open_[i].second) +
+                        " (a cycle): a scenario is a tree of tables and arrays");
+      }
+    }
+    open_.emplace_back(v.ptr(), where);
+    nlohmann::json out = table ? nlohmann::json::object() : nlohmann::json::array();
+    if (table) {
+      for (const auto& item : py::reinterpret_borrow<py::object>(v).attr("items")()) {
+        const py::tuple kv = item.cast<py::tuple>();
+        const std::string key = py::str(kv[0]).cast<std::string>();
+        out[key] = json_of(kv[1], where.empty() ? key : where + "." + key);
+      }
+    } else {
+      std::size_t i = 0;
+      for (const py::handle item : v) {
+        out.push_back(json_of(item, where + "[" + std::to_string(i++) + "]"));
+      }
+    }
+    open_.pop_back();
     return out;
   }
-  if (py::hasattr(v, "tolist")) return json_of(v.attr("tolist")(), where);  // numpy
-  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
-    nlohmann::json out = nlohmann::json::array();
-    std::size_t i = 0;
-    for (const py::handle item : v) {
-      out.push_back(json_of(item, where + "[" + std::to_string(i++) + "]"));
-    }
-    return out;
+
+ private:
+  [[noreturn]] static void fail(const std::string& where, const std::string& what) {
+    throw InputError(std::string(kDictLabel) + ": " + (where.empty() ? std::string("scenario") : where) +
+                     ": " + what);
   }
-  throw InputError(std::string(kDictLabel) + ": " + where + ": a scenario value cannot be " +
-                   py::str(py::type::of(v).attr("__name__")).cast<std::string>());
-}
+
+  std::vector<std::pair<const PyObject*, std::string>> open_;
+  std::size_t values_{0};
+};
 
 /// A scenario path (str) or a dict (the Python layer passes os.fspath() of a path).
 scenario::Document document_of(const py::object& source) {
   if (py::isinstance<py::str>(source)) return scenario::load_document(source.cast<std::string>());
-  return scenario::document_from_json(json_of(source, ""), kDictLabel);
+  if (!py::isinstance<py::dict>(source) && !py::hasattr(source, "items")) {
+    throw py::type_error("scenario must be a scenario file path (str) or a dict, got " +
+                         py::str(py::type::of(source).attr("__name__")).cast<std::string>());
+  }
+  return scenario::document_from_json(DictReader().json_of(source, ""), kDictLabel);
 }
 
 /// Collects the rows of a run column by column; to_dict() turns them into numpy arrays.

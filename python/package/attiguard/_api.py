@@ -21,6 +21,13 @@ from ._results import ReachResult, RunResult, balls_of, load_json
 
 Scenario = Union[str, os.PathLike, Mapping[str, Any]]
 
+def _out_path(out: object) -> Union[str, os.PathLike, None]:
+    """`out` as given when it is None or a path; TypeError naming it otherwise."""
+    if out is None or isinstance(out, (str, os.PathLike)):
+        return out
+    raise TypeError(f"out must be a directory path or None, got {type(out).__name__}")
+
+
 def _source(scenario: Scenario) -> Union[str, Mapping[str, Any]]:
     """The scenario for the C++ side: a path as str, or the dict itself."""
     if isinstance(scenario, Mapping):
@@ -59,6 +66,7 @@ def run(scenario: Scenario, out: str | os.PathLike | None = None) -> RunResult:
     `out` the run also writes OUT/trajectory.csv and OUT/summary.json, without it nothing is
     written. Raises InputError (exit code 2), NumericalError (3) or VerificationFailure (4)."""
     out_dir = None
+    _out_path(out)
     if out is not None:
         out_dir = Path(out)
         out_dir.mkdir(parents=True, exist_ok=True)
@@ -75,8 +83,10 @@ def reach(scenario: Scenario, out: str | os.PathLike | None = None,
     radius r, the contraction rate c, the attitude radius, ...). When safety is requested and not
     proved, raises VerificationFailure (the CLI's exit code 4) unless raise_on_failure=False,
     in which case the result (verdict "unsafe" or "unknown") is returned."""
+    if not isinstance(raise_on_failure, bool):
+        raise TypeError(f"raise_on_failure must be True or False, got {type(raise_on_failure).__name__}")
     source = _source(scenario)
-    with _OutDir(out) as d:
+    with _OutDir(_out_path(out)) as d:
         try:
             summary = json.loads(_core._reach(source, str(d.path)))
         except _core.VerificationFailure:

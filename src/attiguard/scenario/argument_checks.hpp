@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
 
 namespace attiguard::scenario {
@@ -34,6 +35,26 @@ namespace attiguard::scenario {
 /// A rotation matrix `key` (the file reader's rotation check: orthonormal to 1e-9, det +1).
 [[nodiscard]] lie::Mat3 checked_rotation_matrix(const lie::Mat3& R, const std::string& key,
                                                 const std::string& label);
+
+/// A unit quaternion `key` [w, x, y, z] (the file reader's { quaternion = … } check: 4 finite
+/// numbers, norm 1 to within 1e-9; docs/scenario-format.md, "Rotations").
+[[nodiscard]] lie::Quat checked_unit_quaternion(const lie::Quat& q, const std::string& key,
+                                                const std::string& label);
+
+/// A rotation vector `key` (the file reader's { rotation_vector = … } check: finite, norm
+/// <= 1e6 rad; docs/scenario-format.md, "Rotations").
+[[nodiscard]] lie::Vec3 checked_rotation_vector(const lie::Vec3& w, const std::string& key,
+                                                const std::string& label);
+
+/// An axis and an angle (the file reader's { axis = …, angle = … } check: a finite non-zero
+/// axis, a finite angle with |angle| <= 1e6 rad), errors naming `axis_key` / `angle_key`;
+/// returns the unit axis.
+[[nodiscard]] lie::Vec3 checked_axis_angle(const lie::Vec3& axis, double angle, const std::string& axis_key,
+                                           const std::string& angle_key, const std::string& label);
+
+/// A finite 3×3 matrix `key`.
+[[nodiscard]] lie::Mat3 checked_matrix3(const lie::Mat3& M, const std::string& key,
+                                        const std::string& label);
 
 /// A finite 3-vector `key`.
 [[nodiscard]] lie::Vec3 checked_vector3(const lie::Vec3& v, const std::string& key,

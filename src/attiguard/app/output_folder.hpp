@@ -50,7 +50,7 @@ class OutputFolder {
  public:
   /// `active` false (an MPI rank other than 0): claim() and fail() touch nothing. `inputs`: the
   /// files the command reads (its scenario), never removed nor renamed even when they carry an
-  /// output name (`attiguard run D/scenario.resolved.toml --out D`, `tune D/best.toml --out D`).
+  /// output name (`attiguard run` of DIR's resolved scenario into DIR, `tune` of DIR's best point into DIR).
   OutputFolder(std::filesystem::path dir, OutputCommand command, bool active = true,
                const std::vector<std::filesystem::path>& inputs = {});
 

@@ -35,6 +35,10 @@ TEST(JsonReader, ReadsObjectsAndRefusesEverythingElseNamingTheFile) {
   EXPECT_NE(refusal("torn", R"({"kind": "pet)").find(": not valid JSON (at byte "), std::string::npos);
   EXPECT_NE(refusal("nan", R"({"x": NaN})").find("not valid JSON"), std::string::npos);
   EXPECT_NE(refusal("empty", "").find("not valid JSON"), std::string::npos);
+  // Found by fuzz/output_reader_fuzz.cpp: nlohmann-json throws out_of_range, not parse_error.
+  EXPECT_NE(refusal("overflow", R"({"x": 45601e0326245489})").find(": not valid JSON (number overflow parsing '45601e0326245489')"),
+            std::string::npos)
+      << refusal("overflow", R"({"x": 45601e0326245489})");
   try {
     (void)read_json_object("/nonexistent/summary.json");
     FAIL() << "accepted";

@@ -22,6 +22,12 @@ nlohmann::json read_json_object(const std::filesystem::path& path) {
     j = nlohmann::json::parse(text.str());
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path.string() + ": not valid JSON (at byte " + std::to_string(e.byte) + ")");
+  } catch (const nlohmann::json::exception& e) {  // out_of_range.406: a number beyond double
+    std::string what = e.what();
+    if (const std::size_t end = what.find("] "); what.rfind("[json.exception.", 0) == 0 && end != std::string::npos) {
+      what.erase(0, end + 2);
+    }
+    throw InputError(path.string() + ": not valid JSON (" + what.substr(0, 120) + ")");
   }
   if (!j.is_object()) {
     throw InputError(path.string() + ": expected a JSON object (as attiguard writes), got " +

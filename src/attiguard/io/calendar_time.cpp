@@ -119,6 +119,10 @@ CalendarTime add_seconds(const CalendarTime& time, double seconds) {
   return {time.whole_seconds + carry, fraction};
 }
 
+CalendarTime last_calendar_time() {
+  return {days_from_civil(9999, 12, 31) * 86400 + 86399, 0.0};
+}
+
 double seconds_between(const CalendarTime& a, const CalendarTime& b) {
   return static_cast<double>(b.whole_seconds - a.whole_seconds) + (b.fraction - a.fraction);
 }

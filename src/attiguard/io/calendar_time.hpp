@@ -29,6 +29,10 @@ struct CalendarTime {
 /// `time` + `seconds` (seconds ≥ 0 or < 0), the fraction kept in [0, 1).
 [[nodiscard]] CalendarTime add_seconds(const CalendarTime& time, double seconds);
 
+/// 9999-12-31T23:59:59, the last whole second of the 4-digit years that CCSDS time tags can
+/// hold (docs/interop.md, "Time tags"): a message must end by it.
+[[nodiscard]] CalendarTime last_calendar_time();
+
 /// b − a in seconds.
 [[nodiscard]] double seconds_between(const CalendarTime& a, const CalendarTime& b);
 

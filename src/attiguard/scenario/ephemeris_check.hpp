@@ -12,4 +12,9 @@ namespace attiguard::scenario {
 /// rejected): the kind parsers call it so that `attiguard check` and `run` report a bad key.
 void check_ephemeris_table(const TableReader& root);
 
+/// Rejects, at `ephemeris.epoch`, an epoch whose run of `duration` seconds would end after
+/// io::last_calendar_time() (the AEM's time tags have 4-digit years; docs/interop.md,
+/// "Scenario keys"). Compared in double before any date is computed. No-op without [ephemeris].
+void check_ephemeris_end(const TableReader& root, double duration);
+
 }  // namespace attiguard::scenario

@@ -5,6 +5,7 @@
 
 #include "attiguard/io/calendar_time.hpp"
 #include "attiguard/scenario/ephemeris_check.hpp"
+#include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
@@ -33,6 +34,12 @@ constexpr std::string_view kDefaultEpoch = "2000-01-01T12:00:00";
 void read_table(const TableReader& e, io::AemMetadata& m) {
   const std::string epoch = e.string_or("epoch", kDefaultEpoch);
   const auto t0 = io::parse_calendar_time(epoch);
+  if (!t0 && epoch.size() >= 19 && epoch.substr(17, 2) == "60" &&
+      io::parse_calendar_time(epoch.substr(0, 17) + "59" + epoch.substr(19))) {
+    e.fail("epoch", "'" + epoch + "' is a UTC leap second, which the epoch cannot be: the AEM's "
+                    "time tags count a uniform scale without leap seconds (docs/interop.md, "
+                    "\"Time tags\"); give the following second (the next day's 00:00:00) instead");
+  }
   if (!t0) {
     e.fail("epoch", "'" + epoch + "' is not a time YYYY-MM-DDThh:mm:ss[.d...] (e.g. "
                     "\"2026-03-20T12:00:00.000\")");
@@ -66,6 +73,20 @@ void check_ephemeris_table(const TableReader& root) {
     io::AemMetadata m = default_ephemeris("scenario");
     read_table(*e, m);
     e->finish();
+  }
+}
+
+void check_ephemeris_end(const TableReader& root, double duration) {
+  const auto e = root.optional_table("ephemeris");
+  if (!e || !e->has("epoch")) return;  // the default epoch (2000) + any countable duration fits
+  io::AemMetadata m = default_ephemeris("scenario");
+  read_table(*e, m);
+  const io::CalendarTime last = io::last_calendar_time();
+  if (const double room = io::seconds_between(m.epoch, last); !(duration <= room)) {
+    e->fail("epoch", "the run of " + detail::format_number(duration) + " s from this epoch ends after " +
+                         io::format_calendar_time(last, 0) + " (" +
+                         detail::format_number(room) + " s after the epoch), the last time an "
+                         "AEM can tag with its 4-digit years; use an earlier epoch");
   }
 }
 

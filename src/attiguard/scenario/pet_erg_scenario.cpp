@@ -124,8 +124,13 @@ void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
 }
 
 /// [imperfections] (docs/pet-erg.md, section 11; docs/scenario-format.md, "pet_erg"): only for
-/// the flight loop (control_period > 0).
-sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period) {
+/// the flight loop (control_period > 0). Every magnitude is bounded where it enters
+/// (docs/scenario-format.md, "pet_erg", "Bounds of [imperfections]"): rate errors below the
+/// flight loop's Nyquist rate pi/control_period, attitude errors below pi/2, the disturbance's
+/// rate build-up over the duration below the Nyquist rate, the torque quantum at least
+/// tau_max 2^-52 (tau/q an exact integer).
+sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period,
+                                             double duration, const Mat3& J, double tau_max) {
   declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
               "disturbance_update", "adversary_weight", "attitude_bias", "attitude_noise",
               "rate_bias", "rate_noise", "delay_periods", "torque_quantum", "seed",
@@ -142,6 +147,18 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
     t.fail(t.has("disturbance_bound") ? "disturbance_bound" : "disturbance",
            "a disturbance needs disturbance_bound > 0 [N m]");
   }
+  // The rate the disturbance can build up over the duration, bound·T/λ_min(J), stays below the
+  // Nyquist rate π/T_c of the flight loop (docs/scenario-format.md, "Bounds of [imperfections]").
+  const double nyquist = std::numbers::pi / control_period;
+  const double lambda_min =
+      Eigen::SelfAdjointEigenSolver<Mat3>(J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+  if (const double most = nyquist * lambda_min / duration; !(d.bound <= most)) {
+    t.fail("disturbance_bound",
+           "at most " + detail::format_number(most) + " N m, got " + detail::format_number(d.bound) +
+               ": the rate it builds over the duration, disturbance_bound x duration / "
+               "lambda_min(J), must stay below the flight loop's Nyquist rate pi/control_period = " +
+               detail::format_number(nyquist) + " rad/s");
+  }
   if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
   d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
   d.hold = control_period;
@@ -153,20 +170,58 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   if (t.has("rate_bias")) s.rate_bias_b = t.vector3("rate_bias");
   s.rate_noise = t.number_or("rate_noise", 0.0, NumberRule::non_negative());
   s.seed = seed;
-  if (s.attitude_error_bound() >= 0.5 * std::numbers::pi) {
-    t.fail(t.has("attitude_noise") ? "attitude_noise" : "attitude_bias",
-           "attitude bias + noise must stay below pi/2 rad, got " + detail::format_number(s.attitude_error_bound()));
+  // Norms without overflow (stableNorm), each compared with its limit before any is combined.
+  const double attitude_bias = s.attitude_bias_b.stableNorm();
+  const double rate_bias = s.rate_bias_b.stableNorm();
+  constexpr double kMaxAttitudeError = 0.5 * std::numbers::pi;
+  const auto bound_error = [&t](std::string_view key, double bias, double noise, double most,
+                                std::string_view unit, std::string_view why) {
+    if (bias + noise < most) return;
+    const std::string_view what = key.ends_with("bound") ? "the bias bound + noise"
+                                  : key.ends_with("noise") ? "bias + noise" : "the bias";
+    const std::size_t note = why.find(" (");
+    t.fail(key, std::string(what) + " must stay below " + std::string(why.substr(0, note)) +
+                    " = " + detail::format_number(most) + " " + std::string(unit) +
+                    (note == std::string_view::npos ? "" : std::string(why.substr(note))) +
+                    ", got " + detail::format_number(bias + noise));
+  };
+  const std::string_view attitude_why = "pi/2 (beyond it the measured attitude may lie in the "
+                                        "other hemisphere)";
+  const std::string_view rate_why = "the flight loop's Nyquist rate pi/control_period";
+  bound_error(t.has("attitude_bias") || !t.has("attitude_noise") ? "attitude_bias"
+                                                                  : "attitude_noise",
+              attitude_bias, 0.0, kMaxAttitudeError, "rad", attitude_why);
+  if (t.has("attitude_noise")) {
+    bound_error("attitude_noise", attitude_bias, s.attitude_noise, kMaxAttitudeError, "rad",
+                attitude_why);
   }
-  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{s.attitude_bias_b.norm()}, NumberRule::non_negative());
-  if (im.attitude_bias_bound < s.attitude_bias_b.norm()) {
-    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(s.attitude_bias_b.norm()) + " rad");
+  bound_error("rate_bias", rate_bias, 0.0, nyquist, "rad/s", rate_why);
+  bound_error("rate_noise", rate_bias, s.rate_noise, nyquist, "rad/s", rate_why);
+  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{attitude_bias}, NumberRule::non_negative());
+  if (im.attitude_bias_bound < attitude_bias) {
+    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(attitude_bias) + " rad");
   }
-  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{s.rate_bias_b.norm()}, NumberRule::non_negative());
-  if (im.rate_bias_bound < s.rate_bias_b.norm()) {
-    t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(s.rate_bias_b.norm()) + " rad/s");
+  if (t.has("attitude_bias_bound")) {
+    bound_error("attitude_bias_bound", im.attitude_bias_bound, s.attitude_noise,
+                kMaxAttitudeError, "rad", attitude_why);
+  }
+  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{rate_bias}, NumberRule::non_negative());
+  if (im.rate_bias_bound < rate_bias) {
+    t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(rate_bias) + " rad/s");
+  }
+  if (t.has("rate_bias_bound")) {
+    bound_error("rate_bias_bound", im.rate_bias_bound, s.rate_noise, nyquist, "rad/s", rate_why);
   }
   im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
   im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
+  // τ/q must be an exact integer of double precision for |τ| ≤ τ_max: q ≥ τ_max 2^-52.
+  if (const double least = std::ldexp(tau_max, -52);
+      im.torque_quantum > 0.0 && im.torque_quantum < least) {
+    t.fail("torque_quantum", "0 (no quantisation) or at least tau_max x 2^-52 = " +
+                                 detail::format_number(least) + " N m (tau/torque_quantum must be "
+                                 "an exact integer in double precision), got " +
+                                 detail::format_number(im.torque_quantum));
+  }
   return im;
 }
 
@@ -254,6 +309,7 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
                        "max_step", "convergence_tolerance"});
   sc.duration = simulation.number("duration", NumberRule::positive());
+  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
   sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
   sc.integrator = parse_integrator_settings(simulation);
   sc.convergence_tolerance =
@@ -264,7 +320,8 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
   if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
-    sc.imperfections = parse_imperfections(*im, sc.control_period);
+    sc.imperfections =
+        parse_imperfections(*im, sc.control_period, sc.duration, sc.params.J, sc.params.tau_max);
   }
   parse_wheels(root, sc);
   if (margins == Margins::robust) set_robust_margins(control, sc);

@@ -9,6 +9,7 @@
 
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/scenario/common_tables.hpp"
+#include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
 namespace attiguard::scenario {
@@ -103,6 +104,23 @@ reach::ReachScenario parse_reach(const Document& doc) {
     sc.soundness.samples = snd->integer_or("samples", 10000, 0, 100000000);
     sc.soundness.seed = static_cast<std::uint64_t>(snd->integer_or("seed", 1, 0, 1L << 62));
     sc.soundness.step = snd->number_or("step", 0.01, NumberRule::positive());
+  }
+  // Each soundness sample (and each adversarial evaluation) integrates the horizon with
+  // soundness.step: the run-step work limit per sample, and over all samples
+  // (docs/scenario-format.md, "reach", [soundness]; docs/errors.md, "Work too large").
+  if (const auto snd = root.optional_table("soundness")) {
+    require_countable(*snd, "step", sc.soundness.step, s.horizon, kMaxRunSteps,
+                      "integrator steps of each soundness sample");
+    const double total = static_cast<double>(sc.soundness.samples) * (s.horizon / sc.soundness.step);
+    if (!(total <= limit_value(kMaxRunSteps))) {
+      snd->fail(snd->has("step") ? "step" : "samples",
+                "samples x horizon/step = " + detail::format_number(std::ceil(total)) +
+                    " integrator steps of the soundness check (at most " +
+                    detail::format_number(limit_value(kMaxRunSteps)) + ", or raise the limit with " +
+                    std::string(limit_flag(kMaxRunSteps)) +
+                    " N): a check that size does not finish in reasonable time; use fewer samples "
+                    "or a larger step");
+    }
   }
   sc.soundness.threads = sc.threads;
   if (const auto saf = root.optional_table("safety")) {

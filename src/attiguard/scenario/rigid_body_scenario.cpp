@@ -51,6 +51,7 @@ sim::RigidBodyScenario parse_rigid_body(const Document& doc) {
   declare(simulation,
           {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol", "max_step"});
   sc.duration = simulation.number("duration", NumberRule::positive());
+  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
   sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
   sc.integrator = parse_integrator_settings(simulation);
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);

@@ -27,6 +27,23 @@ constexpr double kPi = 3.14159265358979323846;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
 constexpr double kMaxThrustTiltDeg = 10.0;
 
+/// Speeds are below the speed of light [m/s] (docs/scenario-format.md, "waypoint", bounds).
+constexpr double kSpeedOfLight = 299792458.0;
+/// Positions are at most one light-year [m] from the origin: the waypoint model is flat,
+/// gravity-free space; beyond it no spacecraft's translation is modelled by it, and squared
+/// distances (≤ 4e32 m², between two points) stay far inside double precision.
+constexpr double kMaxPosition = kSpeedOfLight * 365.25 * 86400.0;
+
+/// A position vector no farther than kMaxPosition from the origin.
+lie::Vec3 bounded_position(const TableReader& t, std::string_view key) {
+  const lie::Vec3 p = t.vector3(key);
+  if (const double r = p.stableNorm(); !(r <= kMaxPosition)) {
+    t.fail(key, "at most one light-year (" + detail::format_number(kMaxPosition) +
+                    " m) from the origin, got " + detail::format_number(r) + " m");
+  }
+  return p;
+}
+
 }  // namespace
 
 sim::WaypointScenario parse_waypoint(const Document& doc) {
@@ -61,8 +78,15 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
 
   if (const auto initial = root.optional_table("initial")) {
     declare(*initial, {"position", "velocity", "attitude", "omega_b"});
-    if (initial->has("position")) sc.p0_i = initial->vector3("position");
-    if (initial->has("velocity")) sc.v0_i = initial->vector3("velocity");
+    if (initial->has("position")) sc.p0_i = bounded_position(*initial, "position");
+    if (initial->has("velocity")) {
+      sc.v0_i = initial->vector3("velocity");
+      if (const double speed = sc.v0_i.stableNorm(); !(speed < kSpeedOfLight)) {
+        initial->fail("velocity", "speed " + detail::format_number(speed) +
+                                      " m/s is not below the speed of light, " +
+                                      detail::format_number(kSpeedOfLight) + " m/s");
+      }
+    }
     if (initial->has("attitude")) sc.R0_ib = initial->rotation("attitude");
     if (initial->has("omega_b")) sc.omega0_b = initial->vector3("omega_b");
   }
@@ -70,7 +94,7 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   const std::vector<TableReader> wps = root.array_of_tables("waypoints");
   for (const TableReader& w : wps) {
     declare(w, {"position"});
-    sc.waypoints_i.push_back(w.vector3("position"));
+    sc.waypoints_i.push_back(bounded_position(w, "position"));
   }
 
   // [guidance] profile first: it decides the defaults of the other tables.
@@ -191,6 +215,7 @@ sim::WaypointScenario parse_waypoint(const Document& doc) {
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
                 "rel_tol", "max_step"});
   sc.duration = sim.number("duration", NumberRule::positive());
+  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
   sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
   sc.integrator = parse_integrator_settings(sim);
   if (sc.control_period > sc.duration) {

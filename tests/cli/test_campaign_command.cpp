@@ -11,14 +11,8 @@
 
 #include "attiguard/parallel/thread_limit.hpp"
 #include "cli_runner.hpp"
+#include "sanitizer_build.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define ATTIGUARD_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ATTIGUARD_TEST_ASAN 1
-#endif
-#endif
 
 namespace attiguard {
 namespace {

@@ -32,8 +32,9 @@ def write_pet_erg_run(directory: Path, cones: int = 2, drop: str | None = None) 
     cols["tau_norm"] = np.exp(-t)
     cols["V"] = 0.3 * np.exp(-t)
     cols["gamma_d"] = np.full_like(t, 0.54)
-    cols["gamma_g"] = 0.7 + 0.0 * t
-    cols["gamma"] = np.minimum(cols["gamma_d"], cols["gamma_g"])
+    if cones:  # attiguard writes gamma_g only with cones (+inf without one)
+        cols["gamma_g"] = 0.7 + 0.0 * t
+    cols["gamma"] = np.minimum(cols["gamma_d"], cols.get("gamma_g", np.inf))
     cols["trigger"] = (t > 2.0).astype(float)
     cols["attitude_error"] = 1.0 - np.cos(0.5 * np.pi - angle)
     cols["reference_error"] = cols["attitude_error"]
@@ -66,10 +67,11 @@ def test_pet_erg_writes_every_png(tmp_path, capsys):
 
 def test_pet_erg_without_cones(tmp_path):
     run = write_pet_erg_run(tmp_path / "run", cones=0)
+    assert "gamma_g" not in (run / "trajectory.csv").read_text().splitlines()[0].split(",")
     assert main(["pet_erg", str(run)]) == EXIT_OK
 
 
 def test_pet_erg_missing_column_exits_2(tmp_path, capsys):
-    run = write_pet_erg_run(tmp_path / "run", drop="gamma_g")
+    run = write_pet_erg_run(tmp_path / "run", drop="gamma_d")
     assert main(["pet_erg", str(run)]) == EXIT_USAGE
-    assert "gamma_g" in capsys.readouterr().err
+    assert "gamma_d" in capsys.readouterr().err

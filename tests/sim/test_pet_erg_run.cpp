@@ -6,15 +6,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
@@ -151,6 +154,36 @@ TEST(PetErgRun, ContinuousErgAlsoKeepsTheConstraintsOnThePaperScenario) {
   EXPECT_LE(r.max_V_minus_Gamma, 0.0);
   EXPECT_LT(r.final_attitude_error, 1e-6);
   EXPECT_EQ(r.samples, 0);
+}
+
+/// Every row written, with its header.
+class CollectingSink final : public io::RowSink {
+ public:
+  void begin(const std::vector<std::string>& columns) override { columns_ = columns; }
+  void row(std::span<const double> values) override { rows_.emplace_back(values.begin(), values.end()); }
+  std::vector<std::string> columns_;
+  std::vector<std::vector<double>> rows_;
+};
+
+TEST(PetErgRun, WithoutConesTheRowsHoldNoGammaGAndOnlyFiniteValues) {
+  // Without a cone Γ_g = +∞ (pointing_threshold.hpp); trajectory.csv then has no gamma_g column
+  // rather than an `inf` in every row (the scenario fuzzer's finding). With cones it has one.
+  std::string text = example_text("pet_erg_paper.toml");
+  text = text.substr(0, text.find("[[cones]]")) + text.substr(text.find("[simulation]"));
+  for (const bool with_cones : {false, true}) {
+    const sim::PetErgScenario sc = scenario::parse_pet_erg(
+        with_cones ? paper_doc() : scenario::parse_document(text, "no_cones.toml"));
+    CollectingSink rows;
+    (void)record_pet_erg(sc, rows);
+    const bool has_gamma_g =
+        std::find(rows.columns_.begin(), rows.columns_.end(), "gamma_g") != rows.columns_.end();
+    EXPECT_EQ(has_gamma_g, with_cones);
+    ASSERT_FALSE(rows.rows_.empty());
+    for (const std::vector<double>& row : rows.rows_) {
+      ASSERT_EQ(row.size(), rows.columns_.size());
+      for (std::size_t i = 0; i < row.size(); ++i) ASSERT_TRUE(std::isfinite(row[i])) << rows.columns_[i];
+    }
+  }
 }
 
 TEST(PetErgRun, AdaptiveIntegratorGivesTheSameResult) {

@@ -579,12 +579,15 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
 }
 
 PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
+  // Γ_g only with cones: without one it is +∞ (pointing_threshold.hpp), which no output file
+  // holds (docs/scenario-format.md, "Outputs"); one margin column per cone.
+  const bool has_cones = !sc.cones.empty();
   std::vector<std::string> columns{
       "t",       "q_w",     "q_x",     "q_y",      "q_z",     "omega_x", "omega_y", "omega_z",
       "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w",    "qg_x",    "qg_y",    "qg_z",
-      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "V",       "gamma_d", "gamma_g", "gamma",
-      "trigger", "attitude_error", "reference_error"};
-  const std::size_t fixed = columns.size();
+      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "V",       "gamma_d"};
+  if (has_cones) columns.push_back("gamma_g");
+  for (const char* name : {"gamma", "trigger", "attitude_error", "reference_error"}) columns.push_back(name);
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
     columns.push_back("margin_" + std::to_string(i));
   }
@@ -596,20 +599,18 @@ PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
     const lie::Quat q = lie::rotation_to_quat(y.R[0]);
     const lie::Quat qg = lie::rotation_to_quat(out.R_g);
     const lie::Quat qd = lie::rotation_to_quat(R_d);
-    const double values[] = {t,
-                             q(0), q(1), q(2), q(3),
-                             y.x(0), y.x(1), y.x(2),
-                             out.tau_b(0), out.tau_b(1), out.tau_b(2), out.tau_b.norm(),
-                             qg(0), qg(1), qg(2), qg(3),
-                             qd(0), qd(1), qd(2), qd(3),
-                             out.V, out.gamma_d, out.gamma_g, out.gamma,
-                             out.trigger ? 1.0 : 0.0,
-                             lie::phi(R_d.transpose() * y.R[0]),
-                             lie::phi(R_d.transpose() * out.R_g)};
-    std::copy(std::begin(values), std::end(values), row.begin());
-    for (int i = 0; i < out.cone_count; ++i) {
-      row[fixed + static_cast<std::size_t>(i)] = out.margins[static_cast<std::size_t>(i)];
+    auto cell = row.begin();
+    for (const double v : {t, q(0), q(1), q(2), q(3), y.x(0), y.x(1), y.x(2), out.tau_b(0), out.tau_b(1),
+                           out.tau_b(2), out.tau_b.norm(), qg(0), qg(1), qg(2), qg(3), qd(0), qd(1), qd(2),
+                           qd(3), out.V, out.gamma_d}) {
+      *cell++ = v;
     }
+    if (has_cones) *cell++ = out.gamma_g;
+    for (const double v : {out.gamma, out.trigger ? 1.0 : 0.0, lie::phi(R_d.transpose() * y.R[0]),
+                           lie::phi(R_d.transpose() * out.R_g)}) {
+      *cell++ = v;
+    }
+    for (int i = 0; i < out.cone_count; ++i) *cell++ = out.margins[static_cast<std::size_t>(i)];
     rows.row(row);
     ++emitted;
   };

@@ -1,7 +1,7 @@
 """Plots of scenario kind `pet_erg`: the PET-ERG paper's Figs. 2-5.
 
 trajectory.csv columns: t, q_w..q_z (R), omega_x..z, tau_x..z, tau_norm, qg_w..qg_z (R_g),
-qd_w..qd_z (R_d), V, gamma_d, gamma_g, gamma, trigger, attitude_error (phi(R_d^T R)),
+qd_w..qd_z (R_d), V, gamma_d, gamma_g (with cones only), gamma, trigger, attitude_error (phi(R_d^T R)),
 reference_error (phi(R_d^T R_g)), margin_0.. (one per cone).
 summary.json provides `cones` (axis_b, direction_i, theta_c_deg), `tau_max`, `governor`.
 """
@@ -165,7 +165,8 @@ def lyapunov(run: Run) -> Path:
         _shade_trigger(ax, t, run.column("trigger"))
     ax.plot(t, run.column("V"), color="k", linewidth=1.6, label="V")
     ax.plot(t, run.column("gamma_d"), color="C1", linestyle=":", label="Γ_d")
-    gamma_g = run.column("gamma_g")
+    # gamma_g is written only with cones (without one Gamma_g = +inf).
+    gamma_g = run.column("gamma_g") if "gamma_g" in run.columns else np.full_like(t, np.inf)
     if np.any(np.isfinite(gamma_g)):
         ax.plot(t, gamma_g, color="C2", linestyle="--", label="Γ_g(R_g)")
     ax.plot(t, run.column("gamma"), color="C3", linewidth=1.0, label="Γ = min{Γ_d, Γ_g, k_p(2−ε_Γ)}")

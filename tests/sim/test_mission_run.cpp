@@ -182,4 +182,29 @@ TEST(MissionRun, UnknownGovernorKeyIsInvalidInput) {
   EXPECT_NE(r.err.find("tau_maxx"), std::string::npos) << r.err;
 }
 
+// Issue 27: the messages of the waypoint part of a mission carry FILE:LINE:COL like the
+// governor's (the waypoint part was read from a copy of the document, which has no positions).
+TEST(MissionRun, ErrorsOfTheWaypointPartAndOfTheGovernorAreLocated) {
+  const std::string text = attiguard::test::read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) /
+                                                      "examples/mission_sun_constrained.toml");
+  const auto located_error = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const auto pos = t.find(from);
+    EXPECT_NE(pos, std::string::npos) << from;
+    t.replace(pos, from.size(), to);
+    try {
+      (void)attiguard::scenario::parse_mission(attiguard::scenario::parse_document(t, "m.toml"));
+    } catch (const attiguard::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(located_error("mass = 100.0", "mass = -1.0").rfind("m.toml:16:8: spacecraft.mass:", 0), 0u)
+      << located_error("mass = 100.0", "mass = -1.0");
+  EXPECT_EQ(located_error("[guidance]", "[guidance]\nbogus = 1").rfind("m.toml:44:1: guidance.bogus:", 0), 0u)
+      << located_error("[guidance]", "[guidance]\nbogus = 1");
+  EXPECT_EQ(located_error("kappa = 1.0", "kappa = -1.0").rfind("m.toml:64:9: erg.kappa:", 0), 0u)
+      << located_error("kappa = 1.0", "kappa = -1.0");
+}
+
 #endif

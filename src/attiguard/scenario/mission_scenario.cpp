@@ -52,12 +52,10 @@ void check_leg_attitudes(const TableReader& root, const sim::MissionScenario& sc
 
 sim::MissionScenario parse_mission(const Document& doc) {
   sim::MissionScenario sc;
-  // The waypoint part: the same document without the governor's keys, read as kind `waypoint`
-  // (so its messages and checks are exactly those of the waypoint kind).
-  Document wp = doc;
-  for (const char* key : {"governor", "control", "erg", "cones"}) root_table(wp).erase(key);
-  root_table(wp).insert_or_assign("kind", "waypoint");
-  sc.waypoint = parse_waypoint(wp);
+  // The waypoint part, read in place by the waypoint kind's reader (so its messages, with their
+  // FILE:LINE:COL, and its checks are exactly those of the waypoint kind); the governor's keys
+  // are read below.
+  sc.waypoint = parse_waypoint_part(doc, "mission", {"governor", "control", "erg", "cones"});
 
   // The governor part: the blocks of kind pet_erg (common_tables.hpp), J from [spacecraft].
   const TableReader root(doc);

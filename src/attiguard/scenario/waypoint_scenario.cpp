@@ -46,13 +46,17 @@ lie::Vec3 bounded_position(const TableReader& t, std::string_view key) {
 
 }  // namespace
 
-sim::WaypointScenario parse_waypoint(const Document& doc) {
+sim::WaypointScenario parse_waypoint(const Document& doc) { return parse_waypoint_part(doc, "waypoint", {}); }
+
+sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view kind,
+                                          std::initializer_list<std::string_view> other_keys) {
   sim::WaypointScenario sc;
   guidance::MissionParams& mp = sc.mission;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
                  "attitude_control", "fine_position", "guidance", "simulation"});
-  sc.name = read_header(root, doc, "waypoint");
+  declare(root, other_keys);
+  sc.name = read_header(root, doc, kind);
   check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
 
   const TableReader craft = root.table("spacecraft");

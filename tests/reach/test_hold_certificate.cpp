@@ -134,7 +134,7 @@ TEST(HoldCertificate, CoupledMetricProvesALargerSingleBallThanTheProductMetric) 
   EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
   EXPECT_LT(j["adversarial"]["worst_ratio"].get<double>(), 1.0);
   for (const auto& st : j["steps"]) EXPECT_EQ(st["rigour"], "rigorous");
-  replace("rate_mode = \"line_search\"", "rate_mode = \"line_search\"\nmetric = \"product\"");
+  replace("[reach]\n", "[reach]\nmetric = \"product\"\n");
   std::ofstream(twice) << text;
   const auto p = attiguard::test::run_cli("reach '" + twice.string() + "' --out '" + (out / "p").string() + "'");
   EXPECT_EQ(p.exit_code, 4) << p.err;

@@ -69,13 +69,30 @@ reach::ReachScenario parse_reach(const Document& doc) {
               "metric", "rigour"});
   s.horizon = r.number("horizon", NumberRule::positive());
   s.steps = static_cast<int>(r.integer("steps", 1, 100000));
-  s.mode = enum_or(r, "rate_mode", reach::kRateModeNames, reach::RateMode::line_search);
   // Default (docs/reach.md, "Coupled metrics"): coupled where the closed loop feeds the
   // attitude back (its LMI depends on R: the R–ω coupling is what makes it contract), the
   // paper's product metric otherwise.
   s.metric = enum_or(r, "metric", reach::kMetricNames,
                      sc.loop->lmi_depends_on_attitude() ? reach::MetricKind::coupled
                                                         : reach::MetricKind::product);
+  // The rate selection's keys: the product metric's only (the coupled metric chooses its rate
+  // itself, docs/reach.md "Rate selection"), each mode's own.
+  const bool product = s.metric == reach::MetricKind::product;
+  const std::string coupled_note =
+      "only used by the product metric's rate selection (metric = \"product\"); the coupled "
+      "metric chooses its rate itself (docs/reach.md, \"Rate selection\")";
+  r.used_only_if("rate_mode", product, coupled_note);
+  r.used_only_if("rate_step", product, coupled_note);
+  s.mode = enum_or(r, "rate_mode", reach::kRateModeNames, reach::RateMode::line_search);
+  const bool line_search = product && s.mode == reach::RateMode::line_search;
+  const std::string line_search_note = product ? "only used by rate_mode = \"line_search\"" : coupled_note;
+  r.used_only_if("line_search_steps", line_search, line_search_note);
+  r.used_only_if("min_diagonal", line_search, line_search_note);
+  r.used_only_if("min_enclosure_candidates", product && !line_search,
+                 product ? "only used by rate_mode = \"min_enclosure\"" : coupled_note);
+  r.used_only_if("attitude_floor_ratio", product && sc.loop->lmi_depends_on_attitude(),
+                 product ? "only used when the loop's LMI depends on the attitude (a PD loop)"
+                         : coupled_note);
   s.rigour = enum_or(r, "rigour", reach::kRigourNames, reach::Rigour::rigorous);
   s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());

@@ -1,6 +1,6 @@
 #include "attiguard/app/failure.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -42,7 +42,7 @@ std::string at_key(const scenario::Document& doc, std::string_view table, std::s
 /// The fastest rate |λ| [1/s] of the body J under the PD gains kp, kd (linearised about the
 /// reference, one principal axis at a time) and of its gyroscopic coupling at |ω0|.
 double fastest_rate(const Eigen::Matrix3d& J, double kp, double kd, double omega0) {
-  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
+  const Eigen::Vector3d m = lie::symmetric_eigenvalues(J);
   double fastest = 0.0;
   for (int i = 0; i < 3; ++i) {
     const std::complex<double> root = std::sqrt(std::complex<double>(kd * kd - 4.0 * kp * m(i)));

@@ -5,6 +5,7 @@
 /// finaliser of the counter), uniform in the ball of the given radius. No state, no allocation,
 /// the same value whatever the order of the calls (runs are reproducible in campaigns).
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -34,7 +35,7 @@ namespace attiguard::dynamics {
                                                std::uint64_t k, double radius) noexcept {
   if (!(radius > 0.0)) return lie::Vec3::Zero();
   const double z = 1.0 - 2.0 * uniform01(seed, stream, k, 0);
-  const double azimuth = 2.0 * 3.14159265358979323846 * uniform01(seed, stream, k, 1);
+  const double azimuth = 2.0 * std::numbers::pi * uniform01(seed, stream, k, 1);
   const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
   const double length = radius * std::cbrt(uniform01(seed, stream, k, 2));
   return length * lie::Vec3(rho * std::cos(azimuth), rho * std::sin(azimuth), z);

@@ -1,4 +1,5 @@
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -29,8 +30,8 @@ ReactionWheelArray::ReactionWheelArray(std::span<const ReactionWheel> wheels) {
     wheels_[static_cast<std::size_t>(i)] = w;
     AAt += w.axis_b * w.axis_b.transpose();
   }
-  const Eigen::SelfAdjointEigenSolver<lie::Mat3> eig(AAt, Eigen::EigenvaluesOnly);
-  if (!(eig.eigenvalues().minCoeff() > 1e-6 * eig.eigenvalues().maxCoeff())) {
+  const lie::Vec3 sigma2 = lie::symmetric_eigenvalues(AAt);
+  if (!(sigma2(0) > 1e-6 * sigma2(2))) {
     throw SetupError("reaction wheels: the spin axes do not span the three body axes");
   }
   const lie::Mat3 AAt_inv = AAt.inverse();

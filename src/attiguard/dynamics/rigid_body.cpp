@@ -1,6 +1,6 @@
 #include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <sstream>
@@ -20,8 +20,7 @@ std::optional<std::string> inertia_error(const Mat3& J) {
   if ((J - J.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
     return "inertia matrix is not symmetric";
   }
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (J + J.transpose()));
-  const Vec3 m = eig.eigenvalues();  // ascending
+  const Vec3 m = lie::symmetric_eigenvalues(J);  // ascending
   if (!(m(0) > 0.0)) {
     std::ostringstream os;
     os << "inertia matrix is not positive definite (smallest principal moment " << m(0) << ")";
@@ -43,9 +42,9 @@ RigidBody::RigidBody(const Mat3& J) {
   }
   J_ = 0.5 * (J + J.transpose());
   J_inv_ = J_.inverse();
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(J_);
-  lambda_min_ = eig.eigenvalues()(0);
-  lambda_max_ = eig.eigenvalues()(2);
+  const Vec3 moments = lie::symmetric_eigenvalues(J_);
+  lambda_min_ = moments(0);
+  lambda_max_ = moments(2);
 }
 
 }  // namespace attiguard::dynamics

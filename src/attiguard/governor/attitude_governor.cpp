@@ -1,9 +1,9 @@
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/finite.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,9 +48,7 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
           "epsilon_gamma must lie in (0, 2)");
   require(params.J.allFinite() && (params.J - params.J.transpose()).norm() <= 1e-9 * params.J.norm(),
           "the inertia matrix must be finite and symmetric");
-  const double lambda_min = Eigen::SelfAdjointEigenSolver<Mat3>(params.J, Eigen::EigenvaluesOnly)
-                                .eigenvalues()
-                                .minCoeff();
+  const double lambda_min = lie::lambda_min(params.J);
   require(lambda_min > 0.0, "the inertia matrix must be positive definite");
   require(cones.size() <= static_cast<std::size_t>(kMaxCones),
           "at most " + std::to_string(kMaxCones) + " cone constraints");

@@ -1,6 +1,6 @@
 #include "attiguard/governor/robust_margin.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -133,9 +133,9 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
           "epsilon_gamma must lie in (0, 2)");
   require_robust(positive_finite(in.gamma_top) && in.gamma_top <= in.kp * (2.0 - in.epsilon_gamma) * (1.0 + 1e-12),
           "gamma_top must be positive and at most kp (2 - epsilon_gamma)");
-  const Eigen::SelfAdjointEigenSolver<lie::Mat3> eig(in.J, Eigen::EigenvaluesOnly);
-  const double lmin = eig.eigenvalues().minCoeff();
-  const double lmax = eig.eigenvalues().maxCoeff();
+  const lie::Vec3 moments = lie::symmetric_eigenvalues(in.J);
+  const double lmin = moments(0);
+  const double lmax = moments(2);
   require_robust(positive_finite(lmin) && positive_finite(lmax), "the inertia must be positive definite");
 
   RobustMargin m;

@@ -1,12 +1,13 @@
 #include "attiguard/guidance/craft_defaults.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 
 namespace attiguard::guidance {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 double craft_pointing_tolerance(const CraftLimits& c) noexcept {

@@ -9,16 +9,6 @@
 
 namespace attiguard::reach {
 
-namespace {
-Eigen::Vector3d eigenvalues(const Mat3& M) {
-  const Mat3 S = 0.5 * (M + M.transpose());
-  Eigen::SelfAdjointEigenSolver<Mat3> es(S, Eigen::EigenvaluesOnly);
-  return es.eigenvalues();
-}
-}  // namespace
-
-double lambda_min(const Mat3& M) { return eigenvalues(M)(0); }
-double lambda_max(const Mat3& M) { return eigenvalues(M)(2); }
 
 bool is_spd(const Mat3& M) {
   if (!M.allFinite()) return false;

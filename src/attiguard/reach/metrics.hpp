@@ -12,6 +12,7 @@
 
 #include <string>
 
+#include "attiguard/lie/symmetric_eigen.hpp"
 #include "attiguard/reach/interval.hpp"
 
 namespace attiguard::reach {
@@ -47,9 +48,9 @@ struct StateMetric {
 /// (the radius of an M-ball around (R0, ω0) covering B_I(R0, a) × B(ω0, b), coupled fact 1).
 [[nodiscard]] double metric_cover_radius(const StateMetric& m, double a, double b);
 
-/// Smallest / largest eigenvalue of the symmetric part of M.
-[[nodiscard]] double lambda_min(const Mat3& M);
-[[nodiscard]] double lambda_max(const Mat3& M);
+/// Smallest / largest eigenvalue of the symmetric part of M (lie/symmetric_eigen.hpp).
+using lie::lambda_max;
+using lie::lambda_min;
 /// True when M is finite, symmetric (to 1e-12 relative) and λ_min > 0.
 [[nodiscard]] bool is_spd(const Mat3& M);
 /// Throws InputError "`what`: … (must be symmetric positive definite)" unless is_spd(M).

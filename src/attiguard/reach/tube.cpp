@@ -1,6 +1,6 @@
 #include "attiguard/reach/tube.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -106,8 +106,7 @@ TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> 
       M(k, 4) = Aabs.row(k).norm();
     }
     const Mat3 Bc = Benc.center();
-    Eigen::SelfAdjointEigenSolver<Mat3> es(0.5 * (Bc + Bc.transpose()), Eigen::EigenvaluesOnly);
-    M(3, 3) = es.eigenvalues()(2) + Benc.radius().norm();
+    M(3, 3) = lie::lambda_max(Bc) + Benc.radius().norm();
     M(3, 4) = Aabs.norm();
     M(4, 3) = 1.0;
     M(4, 4) = G.norm_max();

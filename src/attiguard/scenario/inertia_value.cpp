@@ -1,9 +1,9 @@
 // TableReader::inertia: an inertia matrix given as principal moments or as a 3×3 matrix,
 // validated with dynamics::inertia_error (docs/scenario-format.md, "Inertia").
 
-#include <Eigen/Eigenvalues>
 
 #include "attiguard/dynamics/rigid_body.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 
@@ -40,9 +40,7 @@ Eigen::Matrix3d TableReader::inertia(std::string_view key) const {
   if (const auto error = dynamics::inertia_error(J)) {
     fail(key, *error);
   }
-  const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(0.5 * (J + J.transpose()))
-                              .eigenvalues()
-                              .minCoeff();
+  const double smallest = lie::lambda_min(J);
   if (smallest < kMinInertia) {
     fail(key, "a principal moment of " + detail::format_number(smallest) + " kg m^2 is below the "
               "usable range of inertias (at least 1e-12 kg m^2; is the unit kg m^2?)");

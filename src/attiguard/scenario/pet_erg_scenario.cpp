@@ -1,8 +1,8 @@
 // Scenario kind `pet_erg` (docs/scenario-format.md, section "pet_erg").
 
 #include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -95,7 +95,7 @@ governor::ReferenceSchedule parse_desired(const TableReader& t,
 /// control.tau_max (docs/pet-erg.md, "Torque threshold Γ_d", range check).
 void check_torque_threshold(const TableReader& control, const governor::GovernorParams& params) {
   const double lambda_min =
-      Eigen::SelfAdjointEigenSolver<Mat3>(params.J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+      lie::lambda_min(params.J);
   if (!(lambda_min > 0.0)) return;  // the inertia reader has refused it already
   try {
     (void)governor::compute_torque_threshold(
@@ -151,7 +151,7 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   // Nyquist rate π/T_c of the flight loop (docs/scenario-format.md, "Bounds of [imperfections]").
   const double nyquist = std::numbers::pi / control_period;
   const double lambda_min =
-      Eigen::SelfAdjointEigenSolver<Mat3>(J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+      lie::lambda_min(J);
   if (const double most = nyquist * lambda_min / duration; !(d.bound <= most)) {
     t.fail("disturbance_bound",
            "at most " + detail::format_number(most) + " N m, got " + detail::format_number(d.bound) +

@@ -1,8 +1,8 @@
 // `[control] margins = "robust"` (docs/pet-erg.md, section 13).
 
 #include "attiguard/scenario/robust_margin_setup.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -56,7 +56,7 @@ governor::RobustMarginInputs margin_inputs(const TableReader& control, const sim
       h2 += sc.wheels[i].momentum_max * sc.wheels[i].momentum_max;
     }
     const double sigma_max = std::sqrt(
-        Eigen::SelfAdjointEigenSolver<lie::Mat3>(A * A.transpose(), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff());
+        lie::lambda_max(A * A.transpose()));
     in.applied_torque_max = std::min(in.applied_torque_max, sigma_max * std::sqrt(u2));
     in.wheel_momentum_max = sigma_max * std::sqrt(h2);
   }
@@ -127,7 +127,7 @@ void set_robust_margins(const TableReader& control, sim::PetErgScenario& sc) {
            detail::format_number(sc.params.tau_max));
   }
   const double lambda_min =
-      Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.params.J, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+      lie::lambda_min(sc.params.J);
   double gamma_d = 0.0;
   try {
     gamma_d = governor::compute_torque_threshold({in.kp, in.kd, lambda_min, sc.robust_tau_max}).gamma_d;

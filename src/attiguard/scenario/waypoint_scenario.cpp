@@ -1,7 +1,9 @@
 // Scenario kind `waypoint` (docs/scenario-format.md, section "waypoint").
 
 #include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <initializer_list>
 #include <optional>
 
-#include <Eigen/Eigenvalues>
 
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/guidance/craft_defaults.hpp"
@@ -23,7 +24,7 @@ namespace attiguard::scenario {
 namespace {
 
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 /// Largest main-engine misalignment accepted by `spacecraft.main_thrust_axis_b` [deg].
 constexpr double kMaxThrustTiltDeg = 10.0;
 
@@ -112,9 +113,9 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
   limits.mass = mp.mass;
   limits.T_max = mp.T_max;
   limits.f_max = mp.f_max;
-  const lie::Vec3 moments = Eigen::SelfAdjointEigenSolver<lie::Mat3>(sc.J).eigenvalues();
-  limits.J_max = moments.maxCoeff();
-  limits.J_min = moments.minCoeff();
+  const lie::Vec3 moments = lie::symmetric_eigenvalues(sc.J);
+  limits.J_max = moments(2);
+  limits.J_min = moments(0);
   limits.J = sc.J;
   limits.max_wheel_torque = sc.max_wheel_torque;
   limits.control_period = sc.control_period;

@@ -3,6 +3,7 @@
 
 #include "attiguard/sim/mission_run.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -162,7 +163,7 @@ nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& 
   for (const auto& c : sc.cones) {
     cones.push_back({{"axis_b", {c.axis_b(0), c.axis_b(1), c.axis_b(2)}},
                      {"direction_i", {c.direction_i(0), c.direction_i(1), c.direction_i(2)}},
-                     {"theta_c_deg", c.theta_c * 180.0 / 3.14159265358979323846}});
+                     {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi}});
   }
   summary["cones"] = cones;
   nlohmann::json wps = nlohmann::json::array();

@@ -34,6 +34,7 @@ if [[ "$mode" == test ]]; then
     openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
     python3-h5py               # the tests read the retained HDF5 files
     chromium                   # the browser test of the viewer (docs/viewer.md)
+    universal-ctags            # function lengths (tests/architecture/check_function_length.py)
   )
   # node and npm rebuild the viewer bundle for its reproducibility test and drive Chromium
   # (docs/viewer.md): Debian's when the machine has no node.

@@ -107,9 +107,8 @@ function reachStrips(parent, series) {
   return strips;
 }
 
-function main() {
-  const data = loadData();
-  const series = (name) => seriesOf(data, name);
+/** Title, style and the header line of the page. */
+function pageHeader(data) {
   document.title = `attiguard view: ${data.name} (${data.kind})`;
   const style = document.createElement('style');
   style.textContent = STYLE;
@@ -117,19 +116,10 @@ function main() {
   const header = el('header');
   header.append(el('h1', {}, `${data.name}`), el('div', { className: 'sub' }, headline(data)));
   document.body.appendChild(header);
+}
 
-  const api = { ready: false, kind: data.kind, name: data.name, errors: [] };
-  window.attiguardView = api;
-
-  if (data.kind === 'campaign') {
-    const view = campaignView(document.body, data, series);
-    api.canvas = view.canvas;
-    api.canvasStats = () => canvasStats(view.canvas, [255, 255, 255]);
-    api.ready = true;
-    return;
-  }
-
-  const traj = series('trajectory');
+/** The 3-D scene of the kind (main view and inset), in a box beside its legend. */
+function sceneView(data, series, traj) {
   const wrap = el('div', { id: 'wrap' });
   const sceneBox = el('div', { id: 'scene' });
   const legendBox = el('ul', { id: 'legend' });
@@ -138,7 +128,6 @@ function main() {
   const renderer = makeRenderer(sceneBox, SCENE_W, SCENE_H);
   renderer.domElement.id = 'scene-canvas';
 
-  const t = traj.col('t');
   const q = quaternions(traj, 'q_w', 'q_x', 'q_y', 'q_z');
   let main = null;
   let inset = null;
@@ -157,58 +146,64 @@ function main() {
   for (const n of ['boundary', 'samples', 'tube']) if (series(n)) legend.push(decimationNote(series(n)));
   legend.push('units: SI (s, m, rad, N m); drag to turn, wheel to zoom');
   for (const l of legend) legendBox.appendChild(el('li', { innerHTML: l }));
+  return { renderer, main, inset };
+}
 
-  // Controls: slider over the displayed samples' times, play / pause, speed.
+/** Draws the main view and, in its lower right corner, the inset. */
+function renderScenes({ renderer, main, inset }) {
+  renderer.setViewport(0, 0, SCENE_W, SCENE_H);
+  renderer.setScissorTest(false);
+  renderer.clear();
+  main.camera.aspect = SCENE_W / SCENE_H;
+  main.camera.updateProjectionMatrix();
+  renderer.render(main.scene, main.camera);
+  if (inset) {
+    const w = INSET_W;
+    const h = INSET_H;
+    renderer.setScissorTest(true);
+    renderer.setScissor(SCENE_W - w - 6, 6, w, h);
+    renderer.setViewport(SCENE_W - w - 6, 6, w, h);
+    renderer.setClearColor(0xe4e9f1, 1);
+    renderer.clear();
+    renderer.setClearColor(BACKGROUND, 1);
+    inset.camera.aspect = w / h;
+    inset.camera.updateProjectionMatrix();
+    renderer.render(inset.scene, inset.camera);
+    renderer.setScissorTest(false);
+  }
+}
+
+/** Controls: slider over the displayed samples' times, play / pause, speed. */
+function timeControls(t) {
   const controls = el('div', { className: 'controls' });
   const play = el('button', { id: 'play' }, 'play');
   const speed = el('select', { id: 'speed' });
-  const duration = t[t.length - 1] - t[0];
   for (const f of [0.25, 1, 4, 16]) speed.add(new Option(`speed ${f}× (the run in ${(20 / f).toFixed(0)} s)`, String(f)));
   speed.value = '1';
   const slider = el('input', { id: 'time-slider', type: 'range', min: String(t[0]), max: String(t[t.length - 1]), step: 'any', value: String(t[0]) });
   const timeLabel = el('span', { id: 'time-label' });
   controls.append(play, speed, slider, timeLabel);
   document.body.appendChild(controls);
-  const stripsBox = el('div', { id: 'strips' });
-  document.body.appendChild(stripsBox);
-  const strips = data.kind === 'reach' ? reachStrips(stripsBox, series) : flightStrips(stripsBox, traj, t);
+  return { play, speed, slider, timeLabel };
+}
 
-  let index = 0;
-  let time = t[0];
-  function render() {
-    renderer.setViewport(0, 0, SCENE_W, SCENE_H);
-    renderer.setScissorTest(false);
-    renderer.clear();
-    main.camera.aspect = SCENE_W / SCENE_H;
-    main.camera.updateProjectionMatrix();
-    renderer.render(main.scene, main.camera);
-    if (inset) {
-      const w = INSET_W;
-      const h = INSET_H;
-      renderer.setScissorTest(true);
-      renderer.setScissor(SCENE_W - w - 6, 6, w, h);
-      renderer.setViewport(SCENE_W - w - 6, 6, w, h);
-      renderer.setClearColor(0xe4e9f1, 1);
-      renderer.clear();
-      renderer.setClearColor(BACKGROUND, 1);
-      inset.camera.aspect = w / h;
-      inset.camera.updateProjectionMatrix();
-      renderer.render(inset.scene, inset.camera);
-      renderer.setScissorTest(false);
-    }
-  }
+/** The time cursor over samples t: setTime moves scenes, strips and controls; play/pause animates it. */
+function player(t, view, strips, ui) {
+  const { main, inset } = view;
+  const duration = t[t.length - 1] - t[0];
+  const state = { index: 0, time: t[0] };
   function setTime(value) {
-    index = indexAt(t, value);
-    time = t[index];
-    main.update(index, time);
-    if (inset) inset.update(index, time);
-    slider.value = String(time);
-    timeLabel.textContent = `t = ${time.toFixed(3)} s of ${t[t.length - 1]} s (sample ${index + 1}/${t.length})`;
-    for (const s of strips) s.draw(time);
-    render();
+    state.index = indexAt(t, value);
+    state.time = t[state.index];
+    main.update(state.index, state.time);
+    if (inset) inset.update(state.index, state.time);
+    ui.slider.value = String(state.time);
+    ui.timeLabel.textContent = `t = ${state.time.toFixed(3)} s of ${t[t.length - 1]} s (sample ${state.index + 1}/${t.length})`;
+    for (const s of strips) s.draw(state.time);
+    renderScenes(view);
   }
-  slider.addEventListener('input', () => setTime(parseFloat(slider.value)));
-  main.controls.addEventListener('change', render);
+  ui.slider.addEventListener('input', () => setTime(parseFloat(ui.slider.value)));
+  main.controls.addEventListener('change', () => renderScenes(view));
   if (inset) inset.controls.enabled = false;
 
   let playing = false;
@@ -217,34 +212,60 @@ function main() {
     if (!playing) return;
     const dt = last ? (ts - last) / 1000 : 0;
     last = ts;
-    let next = time + dt * parseFloat(speed.value) * duration * 0.05;
+    let next = state.time + dt * parseFloat(ui.speed.value) * duration * 0.05;
     if (next >= t[t.length - 1]) {
       next = t[t.length - 1];
       playing = false;
-      play.textContent = 'play';
+      ui.play.textContent = 'play';
     }
     setTime(next);
     if (playing) requestAnimationFrame(frame);
   }
-  play.addEventListener('click', () => {
+  ui.play.addEventListener('click', () => {
     playing = !playing;
-    play.textContent = playing ? 'pause' : 'play';
+    ui.play.textContent = playing ? 'pause' : 'play';
     last = 0;
     if (playing) {
-      if (time >= t[t.length - 1]) setTime(t[0]);
+      if (state.time >= t[t.length - 1]) setTime(t[0]);
       requestAnimationFrame(frame);
     }
   });
+  return { setTime, state };
+}
+
+function main() {
+  const data = loadData();
+  const series = (name) => seriesOf(data, name);
+  pageHeader(data);
+  const api = { ready: false, kind: data.kind, name: data.name, errors: [] };
+  window.attiguardView = api;
+
+  if (data.kind === 'campaign') {
+    const view = campaignView(document.body, data, series);
+    api.canvas = view.canvas;
+    api.canvasStats = () => canvasStats(view.canvas, [255, 255, 255]);
+    api.ready = true;
+    return;
+  }
+
+  const traj = series('trajectory');
+  const view = sceneView(data, series, traj);
+  const t = traj.col('t');
+  const ui = timeControls(t);
+  const stripsBox = el('div', { id: 'strips' });
+  document.body.appendChild(stripsBox);
+  const strips = data.kind === 'reach' ? reachStrips(stripsBox, series) : flightStrips(stripsBox, traj, t);
+  const { setTime, state } = player(t, view, strips, ui);
 
   setTime(t[0]);
   Object.assign(api, {
     setTime,
-    canvas: renderer.domElement,
+    canvas: view.renderer.domElement,
     state: () => {
-      const b = (main.bodyObject || inset.bodyObject).quaternion;
-      return { t: time, index, body_q: [b.w, b.x, b.y, b.z], rows_shown: t.length };
+      const b = (view.main.bodyObject || view.inset.bodyObject).quaternion;
+      return { t: state.time, index: state.index, body_q: [b.w, b.x, b.y, b.z], rows_shown: t.length };
     },
-    canvasStats: () => canvasStats(renderer.domElement, [0xf4, 0xf6, 0xfa], inset ? INSET_RECT : null),
+    canvasStats: () => canvasStats(view.renderer.domElement, [0xf4, 0xf6, 0xfa], view.inset ? INSET_RECT : null),
     ready: true,
   });
 }

@@ -3,27 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <vector>
 
+#include "attiguard/io/csv_writer.hpp"
+
 namespace attiguard::scenario::detail {
 
-std::string format_number(double x) {
-  if (std::isnan(x)) {
-    return "nan";
-  }
-  if (std::isinf(x)) {
-    return x > 0 ? "inf" : "-inf";
-  }
-  std::array<char, 64> buf{};
-  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-  if (ec != std::errc{}) {
-    return "?";
-  }
-  return std::string(buf.data(), end);
-}
+std::string format_number(double x) { return io::format_double(x); }
 
 std::string quoted(std::string_view s, char quote) {
   std::string out(1, quote);

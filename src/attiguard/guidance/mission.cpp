@@ -108,122 +108,145 @@ void Mission::enter(Mode next, const MissionInputs& in) noexcept {
   }
 }
 
-TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) const noexcept {
-  const Vec3 e_i = waypoints_[static_cast<std::size_t>(index_)] - in.p_i;
-  const double dist = e_i.norm();
-  const double speed = in.v_i.norm();
-  const double closing = closing_speed(e_i, in.v_i);
-  const bool accel_distance_done =
-      dist < (1.0 - params_.acceleration_fraction) * leg_distance_;
+namespace {
+
+/// What the transitions of one sample are decided on (docs/waypoint.md, "State machine").
+struct LegMeasures {
+  Vec3 e_i;                  ///< p_wp − p_i [m]
+  double dist;               ///< ‖e_i‖ [m]
+  double speed;              ///< ‖v_i‖ [m/s]
+  double closing;            ///< closing speed ê·v_i [m/s]
+  double lateral;            ///< speed across the line of sight [m/s]
+  bool accel_distance_done;  ///< the acceleration fraction of the leg flown
+  bool flip_due;             ///< braking, flip included, must begin now
+  bool brake_needed;         ///< more speed than the RCT can take back
+};
+
+/// The measures of a sample towards waypoint `p_wp` on a leg of length `leg_distance`; the
+/// caller sets brake_needed.
+LegMeasures measure_leg(const MissionParams& p, const Vec3& p_wp, const MissionInputs& in,
+                        double leg_distance) noexcept {
+  LegMeasures m{};
+  m.e_i = p_wp - in.p_i;
+  m.dist = m.e_i.norm();
+  m.speed = in.v_i.norm();
+  m.closing = closing_speed(m.e_i, in.v_i);
+  m.accel_distance_done = m.dist < (1.0 - p.acceleration_fraction) * leg_distance;
   // The flip must start flip_lead_time before braking must begin: the predicted stopping
   // distance at the closing speed (not ‖v‖: lateral or receding motion does not bring the
   // craft closer) plus the distance flown during the flip.
-  const bool flip_due =
-      closing > 0.0 && dist - stopping_distance(closing, params_) <= closing * params_.flip_lead_time;
-  // Moving away from the waypoint (or past it) while not braking: re-plan, never coast away.
-  auto overshoot = [&](Mode after_slow) {
-    next = brake_needed(speed) ? Mode::brake : after_slow;
-    return TransitionReason::overshoot;
-  };
-  // Speed across the line of sight that thrust along ê cannot take out: brake to rest first.
-  const double lateral = dist > 0.0 ? (in.v_i - e_i * (e_i.dot(in.v_i) / (dist * dist))).norm() : 0.0;
-  const bool lateral_too_fast = params_.brake_speed > 0.0 &&
-                                lateral > std::max(params_.brake_speed, 0.25 * params_.cruise_speed);
-  if (lateral_too_fast && (mode_ == Mode::align || mode_ == Mode::accelerate || mode_ == Mode::coast)) {
-    next = Mode::brake;
-    return TransitionReason::lateral_speed;
+  m.flip_due = m.closing > 0.0 && m.dist - stopping_distance(m.closing, p) <= m.closing * p.flip_lead_time;
+  m.lateral = m.dist > 0.0 ? (in.v_i - m.e_i * (m.e_i.dot(in.v_i) / (m.dist * m.dist))).norm() : 0.0;
+  return m;
+}
+
+/// The transition to `mode` for `reason`.
+TransitionReason go_to(Mode mode, TransitionReason reason, Mode& next) noexcept {
+  next = mode;
+  return reason;
+}
+
+/// The transition to `after` for `reason`, or to brake first when the speed is too high for
+/// the RCT (reason speed_left).
+TransitionReason brake_first_or(const LegMeasures& m, Mode after, TransitionReason reason,
+                                Mode& next) noexcept {
+  if (m.brake_needed) return go_to(Mode::brake, TransitionReason::speed_left, next);
+  return go_to(after, reason, next);
+}
+
+/// Moving away from the waypoint (or past it) while not braking: re-plan, never coast away;
+/// brake first when the speed is too high for the RCT.
+TransitionReason overshoot_to(const LegMeasures& m, Mode after_slow, Mode& next) noexcept {
+  next = m.brake_needed ? Mode::brake : after_slow;
+  return TransitionReason::overshoot;
+}
+
+/// Speed across the line of sight that thrust along ê cannot take out: brake to rest first.
+bool lateral_too_fast(const MissionParams& p, const LegMeasures& m) noexcept {
+  return p.brake_speed > 0.0 && m.lateral > std::max(p.brake_speed, 0.25 * p.cruise_speed);
+}
+
+/// Mode accelerate: to coast at the end of the acceleration distance or at the cruise speed.
+TransitionReason accelerate_transition(const MissionParams& p, const LegMeasures& m,
+                                       Mode& next) noexcept {
+  // Acceleration also ends when the flip is already due: on a short leg (a re-plan, or a
+  // fast start) the fraction rule alone would leave no room to flip and brake.
+  if ((m.accel_distance_done && m.closing > 0.0) || m.flip_due) {
+    return go_to(Mode::coast, TransitionReason::acceleration_done, next);
+  }
+  if (m.closing > p.cruise_speed) return go_to(Mode::coast, TransitionReason::cruise_speed_reached, next);
+  return TransitionReason::none;
+}
+
+/// Mode coast: to flip at the flip point (FlipTiming), or re-plan when not closing.
+TransitionReason coast_transition(const MissionParams& p, const LegMeasures& m, Mode& next) noexcept {
+  if (!(m.closing > 0.0)) return overshoot_to(m, Mode::align, next);
+  const bool flip = m.flip_due || (p.flip_timing == FlipTiming::immediate && m.accel_distance_done);
+  if (flip) return go_to(Mode::flip, TransitionReason::flip_point, next);
+  return TransitionReason::none;
+}
+
+/// Mode flip: passed the waypoint (or drifting away) before the flip is over: the reversed
+/// error direction would swing through π; brake against v or hand over to fine control.
+TransitionReason flip_transition(const MissionParams& p, const LegMeasures& m, Mode& next) noexcept {
+  if (!(m.closing > 0.0) && m.dist > p.arrival_radius) return overshoot_to(m, Mode::fine, next);
+  if (m.dist <= p.arrival_radius) return brake_first_or(m, Mode::fine, TransitionReason::arrival_sphere, next);
+  return TransitionReason::none;
+}
+
+/// Mode decelerate: to fine control in the arrival sphere, at the main cut-off speed or at the
+/// closest approach.
+TransitionReason decelerate_transition(const MissionParams& p, const LegMeasures& m,
+                                       const Vec3& v_i, Mode& next) noexcept {
+  // Hand over to the RCT only at a speed they can remove (brake_speed); faster, keep braking
+  // with (16), which fires harder the closer the waypoint.
+  if (m.dist <= p.arrival_radius && !m.brake_needed) {
+    return go_to(Mode::fine, TransitionReason::arrival_sphere, next);
+  }
+  if (m.speed <= p.main_cutoff_speed) return go_to(Mode::fine, TransitionReason::main_cutoff_speed, next);
+  // Closest approach: the angle between e and v reaches acos(c_full), where the velocity
+  // projection starts to fade out (e·v = 0 exactly at the closest approach).
+  if (m.e_i.dot(v_i) <= p.projection.cos_full * m.dist * m.speed) {
+    return brake_first_or(m, Mode::fine, TransitionReason::closest_approach, next);
+  }
+  return TransitionReason::none;
+}
+
+/// Mode fine: the waypoint reached at its accuracies, or re-plan beyond the re-plan distance.
+TransitionReason fine_transition(const MissionParams& p, const LegMeasures& m, Mode& next) noexcept {
+  const bool speed_ok = m.speed < p.speed_accuracy;
+  const bool position_ok = p.rct.kappa_p <= 0.0 || m.dist < p.position_accuracy;
+  if (speed_ok && position_ok) {
+    return go_to(Mode::done, TransitionReason::accuracy_met, next);  // resolved to align/done by step()
+  }
+  if (m.dist > p.replan_distance) return brake_first_or(m, Mode::align, TransitionReason::replan, next);
+  return TransitionReason::none;
+}
+
+}  // namespace
+
+TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) const noexcept {
+  LegMeasures m = measure_leg(params_, waypoints_[static_cast<std::size_t>(index_)], in, leg_distance_);
+  m.brake_needed = brake_needed(m.speed);
+  if (lateral_too_fast(params_, m) && (mode_ == Mode::align || mode_ == Mode::accelerate || mode_ == Mode::coast)) {
+    return go_to(Mode::brake, TransitionReason::lateral_speed, next);
   }
   switch (mode_) {
-    case Mode::accelerate:
-      // Acceleration also ends when the flip is already due: on a short leg (a re-plan, or a
-      // fast start) the fraction rule alone would leave no room to flip and brake.
-      if ((accel_distance_done && closing > 0.0) || flip_due) {
-        next = Mode::coast;
-        return TransitionReason::acceleration_done;
-      }
-      if (closing > params_.cruise_speed) {
-        next = Mode::coast;
-        return TransitionReason::cruise_speed_reached;
-      }
-      break;
-    case Mode::coast: {
-      if (!(closing > 0.0)) {
-        return overshoot(Mode::align);
-      }
-      const bool flip = flip_due || (params_.flip_timing == FlipTiming::immediate && accel_distance_done);
-      if (flip) {
-        next = Mode::flip;
-        return TransitionReason::flip_point;
-      }
-      break;
-    }
-    case Mode::flip:
-      // Passed the waypoint (or drifting away) before the flip is over: the reversed error
-      // direction would swing through π; brake against v or hand over to fine control.
-      if (!(closing > 0.0) && dist > params_.arrival_radius) {
-        return overshoot(Mode::fine);
-      }
-      if (dist <= params_.arrival_radius) {
-        if (brake_needed(speed)) {
-          next = Mode::brake;
-          return TransitionReason::speed_left;
-        }
-        next = Mode::fine;
-        return TransitionReason::arrival_sphere;
-      }
-      break;
-    case Mode::decelerate:
-      // Hand over to the RCT only at a speed they can remove (brake_speed); faster, keep braking
-      // with (16), which fires harder the closer the waypoint.
-      if (dist <= params_.arrival_radius && !brake_needed(speed)) {
-        next = Mode::fine;
-        return TransitionReason::arrival_sphere;
-      }
-      if (speed <= params_.main_cutoff_speed) {
-        next = Mode::fine;
-        return TransitionReason::main_cutoff_speed;
-      }
-      // Closest approach: the angle between e and v reaches acos(c_full), where the velocity
-      // projection starts to fade out (e·v = 0 exactly at the closest approach).
-      if (e_i.dot(in.v_i) <= params_.projection.cos_full * dist * speed) {
-        if (brake_needed(speed)) {
-          next = Mode::brake;
-          return TransitionReason::speed_left;
-        }
-        next = Mode::fine;
-        return TransitionReason::closest_approach;
-      }
-      break;
+    case Mode::accelerate: return accelerate_transition(params_, m, next);
+    case Mode::coast: return coast_transition(params_, m, next);
+    case Mode::flip: return flip_transition(params_, m, next);
+    case Mode::decelerate: return decelerate_transition(params_, m, in.v_i, next);
     case Mode::brake:
-      if (speed <= params_.main_cutoff_speed) {
-        next = Mode::fine;
-        return TransitionReason::braked;
-      }
+      if (m.speed <= params_.main_cutoff_speed) return go_to(Mode::fine, TransitionReason::braked, next);
       break;
-    case Mode::fine: {
-      const bool speed_ok = speed < params_.speed_accuracy;
-      const bool position_ok =
-          params_.rct.kappa_p <= 0.0 || dist < params_.position_accuracy;
-      if (speed_ok && position_ok) {
-        next = Mode::done;  // resolved to align/done by step()
-        return TransitionReason::accuracy_met;
-      }
-      if (dist > params_.replan_distance) {
-        if (brake_needed(speed)) {
-          next = Mode::brake;
-          return TransitionReason::speed_left;
-        }
-        next = Mode::align;
-        return TransitionReason::replan;
-      }
-      break;
-    }
+    case Mode::fine: return fine_transition(params_, m, next);
     case Mode::align:
     case Mode::done:
       break;
   }
   return TransitionReason::none;
 }
+
 
 DesiredAttitude Mission::evaluate(const MissionInputs& in, const Vec3& a_i) noexcept {
   if (mode_ == Mode::brake) {
@@ -250,8 +273,64 @@ DesiredAttitude Mission::evaluate(const MissionInputs& in, const Vec3& a_i) noex
   return d;
 }
 
-MissionCommand Mission::step(const MissionInputs& in) noexcept {
-  MissionCommand cmd;
+
+namespace {
+
+/// The pointing error the thrust waits for: ‖ε_{d,b}‖ of the attitude error (27), or, with
+/// pointing_thrust_axis, sin(α/2) of the angle α between x_b and x_d, which equals ‖ε_{d,b}‖
+/// when the error has no roll about x (only the thrust axis matters for firing).
+double pointing_error_of(const MissionParams& p, const lie::Mat3& R_ib, const Quat& q_ib,
+                         const Quat& q_id) noexcept {
+  double pointing = control::attitude_error(q_id, q_ib).tail<3>().norm();
+  if (p.pointing_thrust_axis) {
+    const Vec3 x_b = R_ib.col(0);
+    const Vec3 x_d = lie::quat_to_rotation(q_id).col(0);
+    pointing = std::sqrt(std::max(0.0, 0.5 * (1.0 - x_b.dot(x_d))));
+  }
+  return pointing;
+}
+
+/// The main engine's thrust in `mode` once pointed [Waypoint eq. (13)] [Waypoint eq. (16)]:
+/// (13) when accelerating, (15)-(16) when decelerating, full thrust when braking, else 0 [N].
+double main_engine_thrust(const MissionParams& p, Mode mode, const Vec3& e_i, const Vec3& v_i) noexcept {
+  if (mode == Mode::accelerate) {
+    // (13) on the closing speed: a craft receding (or drifting sideways) faster than V_d still
+    // has to be brought towards the waypoint.
+    return acceleration_thrust(closing_speed(e_i, v_i), p.cruise_speed, p.T_max);
+  }
+  if (mode == Mode::decelerate) {
+    // (14) holds along a line: the distance that the braking must cover is the distance to the
+    // point of closest approach, e·v̂ (= ‖e‖ when v points at the waypoint).
+    const double speed = v_i.norm();
+    const double d_brake = p.brake_along_velocity && speed > 0.0 ? std::max(e_i.dot(v_i) / speed, 0.0)
+                                                                 : e_i.norm();
+    return deceleration_thrust(p.mass, speed, d_brake, p.T_max, p.braking_margin);  // (15)-(16)
+  }
+  if (mode == Mode::brake) return p.T_max;
+  return 0.0;
+}
+
+/// Fine control's RCT command [Waypoint eq. (28)]-(30): the position force allocated to the six
+/// thrusters, bang-bang, and their resulting body force.
+void set_fine_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
+                  MissionCommand& cmd) noexcept {
+  const Vec3 f_b = control::rct_position_force(p.mass, in.R_ib, e_i, in.v_i, p.rct);
+  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);  // (28)-(30)
+  cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
+}
+
+/// A sampled loop cannot follow a frame turning by more than half a radian per period (the
+/// velocity direction of a craft whose thrust quantum a T_s is comparable to its speed, ê next
+/// to the waypoint): the PID gets the feed-forward ω_d capped at 0.5/T_s.
+Vec3 capped_feed_forward(const Vec3& omega_d, double dt) noexcept {
+  const double ff_max = 0.5 / dt;
+  const double ff = omega_d.norm();
+  return ff > ff_max ? Vec3(omega_d * (ff_max / ff)) : omega_d;
+}
+
+}  // namespace
+
+void Mission::begin_sample(const MissionInputs& in) noexcept {
   q_ib_ = started_ ? continuous_q_ib(in.R_ib) : lie::rotation_to_quat(in.R_ib);
   if (!started_) {
     started_ = true;
@@ -259,39 +338,29 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
       start_leg(in);
     }
   }
-  // (a) transitions decided by position and velocity.
-  if (mode_ != Mode::done) {
-    Mode next = mode_;
-    const TransitionReason reason = state_transition(in, next);
-    if (reason != TransitionReason::none) {
-      cmd.transition = true;
-      cmd.from = mode_;
-      cmd.reason = reason;
-      if (reason == TransitionReason::accuracy_met) {
-        ++index_;
-        if (index_ >= static_cast<int>(waypoints_.size())) {
-          q_hold_ = q_last_;
-          mode_ = Mode::done;
-        } else {
-          enter(Mode::align, in);
-        }
-      } else {
-        enter(next, in);
-      }
-    }
+}
+
+void Mission::take_position_transition(const MissionInputs& in, MissionCommand& cmd) noexcept {
+  Mode next = mode_;
+  const TransitionReason reason = state_transition(in, next);
+  if (reason == TransitionReason::none) return;
+  cmd.transition = true;
+  cmd.from = mode_;
+  cmd.reason = reason;
+  if (reason != TransitionReason::accuracy_met) {
+    enter(next, in);
+    return;
   }
-  // (b) desired attitude and pointing error.
-  const lie::Quat& q_ib = q_ib_;
-  DesiredAttitude d = evaluate(in, Vec3::Zero());
-  double pointing = control::attitude_error(d.q_id, q_ib).tail<3>().norm();
-  if (params_.pointing_thrust_axis) {
-    // Only the thrust axis matters for firing: sin(α/2) of the angle α between x_b and x_d,
-    // which equals ‖ε_{d,b}‖ when the error has no roll about x.
-    const Vec3 x_b = in.R_ib.col(0);
-    const Vec3 x_d = lie::quat_to_rotation(d.q_id).col(0);
-    pointing = std::sqrt(std::max(0.0, 0.5 * (1.0 - x_b.dot(x_d))));
+  ++index_;
+  if (index_ >= static_cast<int>(waypoints_.size())) {
+    q_hold_ = q_last_;
+    mode_ = Mode::done;
+  } else {
+    enter(Mode::align, in);
   }
-  // (c) transitions decided by the pointing error (one transition per sample).
+}
+
+void Mission::take_pointing_transition(double pointing, MissionCommand& cmd) noexcept {
   if (!cmd.transition && pointing < params_.pointing_tolerance &&
       (mode_ == Mode::align || mode_ == Mode::flip)) {
     cmd.transition = true;
@@ -299,45 +368,37 @@ MissionCommand Mission::step(const MissionInputs& in) noexcept {
     cmd.reason = TransitionReason::pointing_reached;
     mode_ = mode_ == Mode::align ? Mode::accelerate : Mode::decelerate;
   }
+}
+
+MissionCommand Mission::step(const MissionInputs& in) noexcept {
+  MissionCommand cmd;
+  begin_sample(in);
+  // (a) transitions decided by position and velocity.
+  if (mode_ != Mode::done) {
+    take_position_transition(in, cmd);
+  }
+  // (b) desired attitude and pointing error.
+  const lie::Quat& q_ib = q_ib_;
+  DesiredAttitude d = evaluate(in, Vec3::Zero());
+  const double pointing = pointing_error_of(params_, in.R_ib, q_ib, d.q_id);
+  // (c) transitions decided by the pointing error (one transition per sample).
+  take_pointing_transition(pointing, cmd);
   // (d) thrust (Algorithm 1) and RCT.
-  const double speed = in.v_i.norm();
   const Vec3 e_i = mode_ == Mode::done ? Vec3::Zero()
                                        : Vec3(waypoints_[static_cast<std::size_t>(index_)] - in.p_i);
   const bool pointed = pointing < params_.pointing_tolerance;
-  double thrust = 0.0;
-  if (pointed && mode_ == Mode::accelerate) {
-    // (13) on the closing speed: a craft receding (or drifting sideways) faster than V_d still
-    // has to be brought towards the waypoint.
-    thrust = acceleration_thrust(closing_speed(e_i, in.v_i), params_.cruise_speed, params_.T_max);
-  } else if (pointed && mode_ == Mode::decelerate) {
-    // (14) holds along a line: the distance that the braking must cover is the distance to the
-    // point of closest approach, e·v̂ (= ‖e‖ when v points at the waypoint).
-    const double d_brake = params_.brake_along_velocity && speed > 0.0
-                               ? std::max(e_i.dot(in.v_i) / speed, 0.0)
-                               : e_i.norm();
-    thrust = deceleration_thrust(params_.mass, speed, d_brake, params_.T_max,
-                                 params_.braking_margin);  // (15)-(16)
-  } else if (pointed && mode_ == Mode::brake) {
-    thrust = params_.T_max;
-  }
+  const double thrust = pointed ? main_engine_thrust(params_, mode_, e_i, in.v_i) : 0.0;
   cmd.inputs.thrust = thrust;
   if (mode_ == Mode::fine) {
-    const Vec3 f_b = control::rct_position_force(params_.mass, in.R_ib, e_i, in.v_i, params_.rct);
-    cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), params_.f_max,
-                                     params_.rct_threshold);  // (28)-(30)
-    cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
+    set_fine_rct(params_, in, e_i, cmd);
   }
-  // (e) feed-forward with the acceleration the commands will produce, then the PID (27).
+  // (e) feed-forward with the acceleration the commands will produce, then the PID (27) with
+  // the feed-forward capped (cmd.omega_d_d stays exact).
   const Vec3 a_i = in.R_ib * (Vec3(thrust, 0.0, 0.0) + cmd.inputs.f_rct_b) / params_.mass;
   d = evaluate(in, a_i);
   q_last_ = d.q_id;
-  // A sampled loop cannot follow a frame turning by more than half a radian per period (the
-  // velocity direction of a craft whose thrust quantum a T_s is comparable to its speed, ê next
-  // to the waypoint): the PID gets the feed-forward capped at 0.5/T_s (cmd.omega_d_d stays exact).
-  const double ff_max = 0.5 / in.dt;
-  const double ff = d.omega_d.norm();
-  const Vec3 omega_ff = ff > ff_max ? Vec3(d.omega_d * (ff_max / ff)) : d.omega_d;
-  const control::QuaternionPidOutput pid = pid_.step(q_ib, in.omega_b, d.q_id, omega_ff, in.dt);
+  const control::QuaternionPidOutput pid =
+      pid_.step(q_ib, in.omega_b, d.q_id, capped_feed_forward(d.omega_d, in.dt), in.dt);
   cmd.inputs.tau_b = pid.tau_b;
   cmd.mode = mode_;
   cmd.waypoint = index_;

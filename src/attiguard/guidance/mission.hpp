@@ -174,6 +174,14 @@ class Mission {
   [[nodiscard]] Quat continuous_q_ib(const lie::Mat3& R_ib) const noexcept;
   [[nodiscard]] TransitionReason state_transition(const MissionInputs& in, Mode& next) const noexcept;
   void enter(Mode next, const MissionInputs& in) noexcept;
+  /// The measured attitude with its sign kept continuous; the first leg starts at the first sample.
+  void begin_sample(const MissionInputs& in) noexcept;
+  /// Step (a) of step(): the transition decided by position and velocity (state_transition),
+  /// entered; accuracy_met moves on to the next waypoint (or done).
+  void take_position_transition(const MissionInputs& in, MissionCommand& cmd) noexcept;
+  /// Step (c) of step(): align → accelerate and flip → decelerate once pointed (within the
+  /// pointing tolerance), unless a transition was already taken this sample.
+  void take_pointing_transition(double pointing, MissionCommand& cmd) noexcept;
   /// More speed than the RCT can take back: brake with the main engine first (Mode::brake).
   [[nodiscard]] bool brake_needed(double speed) const noexcept {
     return params_.brake_speed > 0.0 && speed > params_.brake_speed;

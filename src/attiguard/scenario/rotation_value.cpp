@@ -29,6 +29,102 @@ constexpr std::string_view kForms =
     "exactly one of: matrix = [[...], [...], [...]], quaternion = [w, x, y, z], "
     "axis = [x, y, z] with angle (rad) or angle_deg, rotation_vector = [x, y, z] (rad)";
 
+/// Which of the rotation forms a rotation table holds (docs/scenario-format.md, "Rotations").
+struct RotationForms {
+  bool matrix = false;
+  bool quaternion = false;
+  bool axis = false;
+  bool angle = false;
+  bool angle_deg = false;
+  bool rotation_vector = false;
+};
+
+/// Fails unless exactly one form is given (the axis form counts axis, angle and angle_deg).
+void require_one_rotation_form(const TableReader& rot, const RotationForms& has) {
+  std::vector<std::string> forms;
+  if (has.matrix) forms.emplace_back("matrix");
+  if (has.quaternion) forms.emplace_back("quaternion");
+  if (has.axis || has.angle || has.angle_deg) forms.emplace_back("axis");
+  if (has.rotation_vector) forms.emplace_back("rotation_vector");
+  if (forms.empty()) {
+    rot.fail_here("no rotation given: expected " + std::string(kForms));
+  }
+  if (forms.size() > 1) {
+    std::string given;
+    for (const std::string& f : forms) {
+      given += (given.empty() ? "" : " and ") + f;
+    }
+    rot.fail_here(std::to_string(forms.size()) + " rotation forms given (" + given +
+                  "): expected " + std::string(kForms));
+  }
+}
+
+/// The form `matrix`: orthonormal to 1e-9 with det = +1 (docs/scenario-format.md, "Rotations").
+Eigen::Matrix3d rotation_from_matrix(const TableReader& rot) {
+  const Eigen::Matrix3d M = rot.matrix3("matrix");
+  const double err = lie::orthonormality_error(M);
+  if (!(err <= kRotationTolerance)) {
+    rot.fail("matrix", "not a rotation matrix: ||R^T R - I||_F = " + detail::format_number(err) +
+                           " exceeds 1e-9 (det = " + detail::format_number(M.determinant()) +
+                           ")");
+  }
+  const double det = M.determinant();
+  if (!(det > 0.0) || !lie::is_rotation(M, kRotationTolerance)) {
+    rot.fail("matrix", "not a rotation matrix: det = " + detail::format_number(det) +
+                           " (a reflection; a rotation has det = +1)");
+  }
+  return M;
+}
+
+/// The form `quaternion`: [w, x, y, z] scalar first, unit to 1e-9 (docs/conventions.md).
+Eigen::Matrix3d rotation_from_quaternion(const TableReader& rot) {
+  const Eigen::VectorXd q = rot.vector("quaternion");
+  if (q.size() != 4) {
+    rot.fail("quaternion", "expected an array of 4 numbers [w, x, y, z] (scalar first), got " +
+                               std::to_string(q.size()) +
+                               (q.size() == 1 ? " element" : " elements"));
+  }
+  const double norm = q.norm();
+  if (!(std::abs(norm - 1.0) <= kRotationTolerance)) {
+    rot.fail("quaternion", "not a unit quaternion: norm = " + detail::format_number(norm) +
+                               " (must be 1 to within 1e-9)");
+  }
+  return lie::quat_to_rotation(lie::Quat(q(0), q(1), q(2), q(3)));
+}
+
+/// The form `rotation_vector`: θ k in rad, exp of its hat (docs/conventions.md).
+Eigen::Matrix3d rotation_from_rotation_vector(const TableReader& rot) {
+  const Eigen::Vector3d v = rot.vector3("rotation_vector");
+  if (!(v.norm() <= kMaxRotationAngle)) {
+    rot.fail("rotation_vector", "norm " + detail::format_number(v.norm()) + " rad is beyond " +
+                                    kMaxAngleText);
+  }
+  return lie::exp(v);
+}
+
+/// The axis-angle form: a non-zero axis with exactly one of angle (rad) and angle_deg (deg).
+Eigen::Matrix3d rotation_from_axis_and_angle(const TableReader& rot, const RotationForms& has) {
+  if (!has.axis) {
+    rot.fail(has.angle ? "angle" : "angle_deg",
+             "an angle needs an axis: { axis = [x, y, z], angle = θ } (rad) or angle_deg (deg)");
+  }
+  if (has.angle && has.angle_deg) {
+    rot.fail("angle_deg", "give either angle (rad) or angle_deg (deg), not both");
+  }
+  if (!has.angle && !has.angle_deg) {
+    rot.fail_here("axis needs an angle: add angle (rad) or angle_deg (deg)");
+  }
+  const Eigen::Vector3d axis = rot.direction("axis");
+  const double angle =
+      has.angle ? rot.number("angle") : rot.number("angle_deg") * std::numbers::pi / 180.0;
+  if (!(std::abs(angle) <= kMaxRotationAngle)) {
+    rot.fail(has.angle ? "angle" : "angle_deg",
+             detail::format_number(has.angle ? rot.number("angle") : rot.number("angle_deg")) +
+                 (has.angle ? " rad" : " deg") + " is beyond " + kMaxAngleText);
+  }
+  return lie::exp(angle * axis);
+}
+
 }  // namespace
 
 Eigen::Matrix3d TableReader::rotation(std::string_view key) const {
@@ -44,88 +140,20 @@ Eigen::Matrix3d TableReader::rotation(std::string_view key) const {
   // Not registered for finish(): the forms are every key a rotation table may hold, and the
   // unknown keys are rejected right here, before the forms are counted.
   const TableReader rot(shared_, t, key_path(key));
-  const bool has_matrix = rot.has("matrix");
-  const bool has_quaternion = rot.has("quaternion");
-  const bool has_axis = rot.has("axis");
-  const bool has_angle = rot.has("angle");
-  const bool has_angle_deg = rot.has("angle_deg");
-  const bool has_rotation_vector = rot.has("rotation_vector");
+  RotationForms has;
+  has.matrix = rot.has("matrix");
+  has.quaternion = rot.has("quaternion");
+  has.axis = rot.has("axis");
+  has.angle = rot.has("angle");
+  has.angle_deg = rot.has("angle_deg");
+  has.rotation_vector = rot.has("rotation_vector");
   rot.finish();
+  require_one_rotation_form(rot, has);
 
-  std::vector<std::string> forms;
-  if (has_matrix) forms.emplace_back("matrix");
-  if (has_quaternion) forms.emplace_back("quaternion");
-  if (has_axis || has_angle || has_angle_deg) forms.emplace_back("axis");
-  if (has_rotation_vector) forms.emplace_back("rotation_vector");
-  if (forms.empty()) {
-    rot.fail_here("no rotation given: expected " + std::string(kForms));
-  }
-  if (forms.size() > 1) {
-    std::string given;
-    for (const std::string& f : forms) {
-      given += (given.empty() ? "" : " and ") + f;
-    }
-    rot.fail_here(std::to_string(forms.size()) + " rotation forms given (" + given +
-                  "): expected " + std::string(kForms));
-  }
-
-  if (has_matrix) {
-    const Eigen::Matrix3d M = rot.matrix3("matrix");
-    const double err = lie::orthonormality_error(M);
-    if (!(err <= kRotationTolerance)) {
-      rot.fail("matrix", "not a rotation matrix: ||R^T R - I||_F = " + detail::format_number(err) +
-                             " exceeds 1e-9 (det = " + detail::format_number(M.determinant()) +
-                             ")");
-    }
-    const double det = M.determinant();
-    if (!(det > 0.0) || !lie::is_rotation(M, kRotationTolerance)) {
-      rot.fail("matrix", "not a rotation matrix: det = " + detail::format_number(det) +
-                             " (a reflection; a rotation has det = +1)");
-    }
-    return M;
-  }
-  if (has_quaternion) {
-    const Eigen::VectorXd q = rot.vector("quaternion");
-    if (q.size() != 4) {
-      rot.fail("quaternion", "expected an array of 4 numbers [w, x, y, z] (scalar first), got " +
-                                 std::to_string(q.size()) +
-                                 (q.size() == 1 ? " element" : " elements"));
-    }
-    const double norm = q.norm();
-    if (!(std::abs(norm - 1.0) <= kRotationTolerance)) {
-      rot.fail("quaternion", "not a unit quaternion: norm = " + detail::format_number(norm) +
-                                 " (must be 1 to within 1e-9)");
-    }
-    return lie::quat_to_rotation(lie::Quat(q(0), q(1), q(2), q(3)));
-  }
-  if (has_rotation_vector) {
-    const Eigen::Vector3d v = rot.vector3("rotation_vector");
-    if (!(v.norm() <= kMaxRotationAngle)) {
-      rot.fail("rotation_vector", "norm " + detail::format_number(v.norm()) + " rad is beyond " +
-                                      kMaxAngleText);
-    }
-    return lie::exp(v);
-  }
-  // Axis-angle.
-  if (!has_axis) {
-    rot.fail(has_angle ? "angle" : "angle_deg",
-             "an angle needs an axis: { axis = [x, y, z], angle = θ } (rad) or angle_deg (deg)");
-  }
-  if (has_angle && has_angle_deg) {
-    rot.fail("angle_deg", "give either angle (rad) or angle_deg (deg), not both");
-  }
-  if (!has_angle && !has_angle_deg) {
-    rot.fail_here("axis needs an angle: add angle (rad) or angle_deg (deg)");
-  }
-  const Eigen::Vector3d axis = rot.direction("axis");
-  const double angle =
-      has_angle ? rot.number("angle") : rot.number("angle_deg") * std::numbers::pi / 180.0;
-  if (!(std::abs(angle) <= kMaxRotationAngle)) {
-    rot.fail(has_angle ? "angle" : "angle_deg",
-             detail::format_number(has_angle ? rot.number("angle") : rot.number("angle_deg")) +
-                 (has_angle ? " rad" : " deg") + " is beyond " + kMaxAngleText);
-  }
-  return lie::exp(angle * axis);
+  if (has.matrix) return rotation_from_matrix(rot);
+  if (has.quaternion) return rotation_from_quaternion(rot);
+  if (has.rotation_vector) return rotation_from_rotation_vector(rot);
+  return rotation_from_axis_and_angle(rot, has);
 }
 
 }  // namespace attiguard::scenario

@@ -45,22 +45,12 @@ lie::Vec3 bounded_position(const TableReader& t, std::string_view key) {
   return p;
 }
 
-}  // namespace
 
-sim::WaypointScenario parse_waypoint(const Document& doc) { return parse_waypoint_part(doc, "waypoint", {}); }
-
-sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view kind,
-                                          std::initializer_list<std::string_view> other_keys) {
-  sim::WaypointScenario sc;
+/// [spacecraft]: mass, inertia, thrust levels and the main engine's mounting (docs/waypoint.md).
+/// Returns the table, whose rct_thrust a later authority check names.
+TableReader read_waypoint_spacecraft(const TableReader& root, sim::WaypointScenario& sc) {
   guidance::MissionParams& mp = sc.mission;
-  const TableReader root(doc);
-  declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
-                 "attitude_control", "fine_position", "guidance", "simulation"});
-  declare(root, other_keys);
-  sc.name = read_header(root, doc, kind);
-  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
-
-  const TableReader craft = root.table("spacecraft");
+  TableReader craft = root.table("spacecraft");
   declare(craft, {"mass", "inertia", "main_thrust", "rct_thrust", "max_wheel_torque",
                   "main_thrust_axis_b"});
   mp.mass = craft.number("mass", NumberRule::positive());
@@ -80,71 +70,85 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
                                            " deg of misalignment is supported");
     }
   }
+  return craft;
+}
 
-  if (const auto initial = root.optional_table("initial")) {
-    declare(*initial, {"position", "velocity", "attitude", "omega_b"});
-    if (initial->has("position")) sc.p0_i = bounded_position(*initial, "position");
-    if (initial->has("velocity")) {
-      sc.v0_i = initial->vector3("velocity");
-      if (const double speed = sc.v0_i.stableNorm(); !(speed < kSpeedOfLight)) {
-        initial->fail("velocity", "speed " + detail::format_number(speed) +
-                                      " m/s is not below the speed of light, " +
-                                      detail::format_number(kSpeedOfLight) + " m/s");
-      }
+/// [initial]: the optional initial position, velocity (below the speed of light), attitude and
+/// body rate.
+void read_waypoint_initial(const TableReader& root, sim::WaypointScenario& sc) {
+  const auto initial = root.optional_table("initial");
+  if (!initial) return;
+  declare(*initial, {"position", "velocity", "attitude", "omega_b"});
+  if (initial->has("position")) sc.p0_i = bounded_position(*initial, "position");
+  if (initial->has("velocity")) {
+    sc.v0_i = initial->vector3("velocity");
+    if (const double speed = sc.v0_i.stableNorm(); !(speed < kSpeedOfLight)) {
+      initial->fail("velocity", "speed " + detail::format_number(speed) +
+                                    " m/s is not below the speed of light, " +
+                                    detail::format_number(kSpeedOfLight) + " m/s");
     }
-    if (initial->has("attitude")) sc.R0_ib = initial->rotation("attitude");
-    if (initial->has("omega_b")) sc.omega0_b = initial->vector3("omega_b");
   }
+  if (initial->has("attitude")) sc.R0_ib = initial->rotation("attitude");
+  if (initial->has("omega_b")) sc.omega0_b = initial->vector3("omega_b");
+}
 
-  const std::vector<TableReader> wps = root.array_of_tables("waypoints");
+/// [[waypoints]]: their positions; returns the tables, which the reachability check names.
+std::vector<TableReader> read_waypoint_positions(const TableReader& root, sim::WaypointScenario& sc) {
+  std::vector<TableReader> wps = root.array_of_tables("waypoints");
   for (const TableReader& w : wps) {
     declare(w, {"position"});
     sc.waypoints_i.push_back(bounded_position(w, "position"));
   }
+  return wps;
+}
 
-  // [guidance] profile first: it decides the defaults of the other tables.
-  const TableReader g = root.table("guidance");
-  sc.profile = enum_or(g, "profile", sim::kGuidanceProfileNames, sim::GuidanceProfile::craft);
-  const bool paper = sc.profile == sim::GuidanceProfile::paper;
-  // The control period is needed by the craft defaults; [simulation] is read in full below.
-  const TableReader sim = root.table("simulation");
-  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
+/// The craft's limits from which the craft profile derives its defaults
+/// (guidance/craft_defaults.hpp; docs/waypoint.md, "Tuning").
+guidance::CraftLimits waypoint_craft_limits(const sim::WaypointScenario& sc) {
   guidance::CraftLimits limits;
-  limits.mass = mp.mass;
-  limits.T_max = mp.T_max;
-  limits.f_max = mp.f_max;
+  limits.mass = sc.mission.mass;
+  limits.T_max = sc.mission.T_max;
+  limits.f_max = sc.mission.f_max;
   const lie::Vec3 moments = lie::symmetric_eigenvalues(sc.J);
   limits.J_max = moments(2);
   limits.J_min = moments(0);
   limits.J = sc.J;
   limits.max_wheel_torque = sc.max_wheel_torque;
   limits.control_period = sc.control_period;
+  return limits;
+}
 
-  // [attitude_control]: required by the paper profile (Table I); derived otherwise.
+/// [attitude_control]: required by the paper profile (Table I); derived otherwise.
+void read_waypoint_attitude_control(const TableReader& root, bool paper,
+                                    const guidance::CraftLimits& limits, sim::WaypointScenario& sc) {
   const control::QuaternionPidGains craft_gains = guidance::craft_attitude_gains(limits);
-  if (const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
-                             : root.optional_table("attitude_control")) {
-    declare(*att, {"kp", "ki", "kd", "integral_zone"});
-    // Derived gains keep their shaping, which no key expresses: their kp and kd are not read as
-    // defaults (the resolved scenario would turn the shaping off by writing them).
-    const bool shaped = !paper && !att->has("kp") && !att->has("kd");
-    sc.gains.kp = paper    ? att->number("kp", NumberRule::positive())
-                  : shaped ? craft_gains.kp
-                           : att->number_or("kp", DerivedDefault{craft_gains.kp}, NumberRule::positive());
-    sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
-    sc.gains.kd = paper    ? att->number("kd", NumberRule::positive())
-                  : shaped ? craft_gains.kd
-                           : att->number_or("kd", DerivedDefault{craft_gains.kd}, NumberRule::positive());
-    sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
-    if (shaped) {  // derived gains keep their shaping
-      sc.gains.shaped = craft_gains.shaped;
-      sc.gains.shaping = craft_gains.shaping;
-      sc.gains.shaping_scale = craft_gains.shaping_scale;
-    }
-  } else {
+  const auto att = paper ? std::optional<TableReader>(root.table("attitude_control"))
+                         : root.optional_table("attitude_control");
+  if (!att) {
     sc.gains = craft_gains;
+    return;
   }
+  declare(*att, {"kp", "ki", "kd", "integral_zone"});
+  // Derived gains keep their shaping, which no key expresses: their kp and kd are not read as
+  // defaults (the resolved scenario would turn the shaping off by writing them).
+  const bool shaped = !paper && !att->has("kp") && !att->has("kd");
+  sc.gains.kp = paper    ? att->number("kp", NumberRule::positive())
+                : shaped ? craft_gains.kp
+                         : att->number_or("kp", DerivedDefault{craft_gains.kp}, NumberRule::positive());
+  sc.gains.ki = att->number_or("ki", 0.0, NumberRule::non_negative());
+  sc.gains.kd = paper    ? att->number("kd", NumberRule::positive())
+                : shaped ? craft_gains.kd
+                         : att->number_or("kd", DerivedDefault{craft_gains.kd}, NumberRule::positive());
+  sc.gains.integral_zone = att->number_or("integral_zone", 0.0, NumberRule::non_negative());
+  if (shaped) {  // derived gains keep their shaping
+    sc.gains.shaped = craft_gains.shaped;
+    sc.gains.shaping = craft_gains.shaping;
+    sc.gains.shaping_scale = craft_gains.shaping_scale;
+  }
+}
 
+/// [guidance]: declares its keys and reads the required ones (cruise speed and accuracies).
+void read_waypoint_guidance_required(const TableReader& g, guidance::MissionParams& mp) {
   declare(g, {"profile", "cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
               "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
               "main_cutoff_speed", "replan_distance", "brake_speed",
@@ -154,24 +158,34 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
   mp.arrival_radius = g.number("arrival_radius", NumberRule::positive());
   mp.position_accuracy = g.number("position_accuracy", NumberRule::positive());
   mp.speed_accuracy = g.number("speed_accuracy", NumberRule::positive());
+}
 
-  // [fine_position]: required by the paper profile (κ_d of Table I); derived otherwise.
+/// [fine_position]: required by the paper profile (κ_d of Table I); derived otherwise. Returns
+/// the table when given, which the dead-band checks name.
+std::optional<TableReader> read_waypoint_fine_position(const TableReader& root, bool paper,
+                                                       const guidance::CraftLimits& limits,
+                                                       guidance::MissionParams& mp) {
   const control::RctPositionGains craft_rct =
       guidance::craft_rct_gains(limits, mp.speed_accuracy, mp.position_accuracy);
   mp.rct = craft_rct;
-  const auto fine_table = paper ? std::optional<TableReader>(root.table("fine_position"))
-                                : root.optional_table("fine_position");
-  if (const auto& fine = fine_table) {
-    declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
-    mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
-                           : fine->number_or("kappa_d", DerivedDefault{craft_rct.kappa_d}, NumberRule::positive());
-    // Craft profile: the derived κ_p with the κ_d in force (position control on).
-    mp.rct.kappa_p = fine->number_or(
-        "kappa_p", DerivedDefault{paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy)},
-        NumberRule::non_negative());
-    mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
-  }
+  std::optional<TableReader> fine = paper ? std::optional<TableReader>(root.table("fine_position"))
+                                          : root.optional_table("fine_position");
+  if (!fine) return fine;
+  declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
+  mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
+                         : fine->number_or("kappa_d", DerivedDefault{craft_rct.kappa_d}, NumberRule::positive());
+  // Craft profile: the derived κ_p with the κ_d in force (position control on).
+  mp.rct.kappa_p = fine->number_or(
+      "kappa_p", DerivedDefault{paper ? 0.0 : guidance::craft_kappa_p(limits, mp.rct.kappa_d, mp.position_accuracy)},
+      NumberRule::non_negative());
+  mp.rct_threshold = fine->number_or("on_threshold", 0.5, {0.0, 1.0, true, false});
+  return fine;
+}
 
+/// [guidance]: the optional keys, with the paper's values or the craft-derived defaults.
+void read_waypoint_guidance_options(const TableReader& g, bool paper, const guidance::CraftLimits& limits,
+                                    sim::WaypointScenario& sc) {
+  guidance::MissionParams& mp = sc.mission;
   mp.acceleration_fraction =
       g.number_or("acceleration_fraction", 0.2, {0.0, 0.5, true, false});
   mp.pointing_thrust_axis = enum_or(g, "pointing_error", sim::kPointingErrorNames, !paper);
@@ -205,6 +219,11 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
   mp.flip_lead_time = g.number_or(
       "flip_lead_time", DerivedDefault{paper ? 60.0 : 1.5 * guidance::craft_slew_time(limits, sc.gains)},
       NumberRule::non_negative());
+}
+
+/// The order of the guidance distances and speeds: arrival radius < replan distance, position
+/// accuracy < replan distance (position control on), main cut-off speed < cruise speed.
+void check_waypoint_guidance_order(const TableReader& g, const guidance::MissionParams& mp) {
   if (mp.replan_distance <= mp.arrival_radius) {
     g.fail(g.has("replan_distance") ? "replan_distance" : "arrival_radius",
            "replan_distance (" + detail::format_number(mp.replan_distance) + ") must exceed arrival_radius (" +
@@ -216,7 +235,11 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
   if (mp.main_cutoff_speed >= mp.cruise_speed) {
     g.fail("main_cutoff_speed", "must be < cruise_speed (" + detail::format_number(mp.cruise_speed) + ")");
   }
+}
 
+/// [simulation]: duration, output interval and integrator; control_period was read before
+/// (the craft defaults need it) and is checked here against the others.
+void read_waypoint_simulation(const TableReader& root, const TableReader& sim, sim::WaypointScenario& sc) {
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
                 "rel_tol", "max_step"});
   sc.duration = sim.number("duration", NumberRule::positive());
@@ -236,10 +259,14 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
   require_step_budget(sim, sc.integrator, sc.duration);
   require_countable(sim, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
-  root.finish();
+}
 
-  // What the craft cannot fly (docs/waypoint.md, "Tuning"): rejected with the reason and the
-  // numbers, before flying.
+/// What the craft cannot fly (docs/waypoint.md, "Tuning"): accuracies inside the RCT dead bands
+/// or below one RCT pulse, and an RCT stopping distance beyond the replan distance; rejected
+/// with the reason and the numbers, before flying.
+void check_waypoint_rct_authority(const TableReader& craft, const TableReader& g,
+                                  const std::optional<TableReader>& fine_table,
+                                  const guidance::CraftLimits& limits, const guidance::MissionParams& mp) {
   auto fail_fine = [&](const char* fine_key, const char* guidance_key, const std::string& why) {
     if (fine_table && fine_table->has(fine_key)) fine_table->fail(fine_key, why);
     g.fail(guidance_key, why);
@@ -274,9 +301,13 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
                                  " m/s the main engine leaves at cut-off, more than "
                                  "guidance.replan_distance (" + four_digits(mp.replan_distance) + " m)");
   }
+}
 
-  // Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
-  // (the flip) at the wheels' torque limit per leg longer than the arrival radius.
+/// Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
+/// (the flip) at the wheels' torque limit per leg longer than the arrival radius.
+void check_waypoints_reachable(const std::vector<TableReader>& wps, const guidance::CraftLimits& limits,
+                               const sim::WaypointScenario& sc) {
+  const guidance::MissionParams& mp = sc.mission;
   const double a_max = mp.T_max / mp.mass;
   const double t_flip = guidance::wheel_half_turn_time(limits);
   double t_min = 0.0;
@@ -297,6 +328,44 @@ sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view 
                                      : std::string()));
     }
   }
+}
+
+}  // namespace
+
+sim::WaypointScenario parse_waypoint(const Document& doc) { return parse_waypoint_part(doc, "waypoint", {}); }
+
+sim::WaypointScenario parse_waypoint_part(const Document& doc, std::string_view kind,
+                                          std::initializer_list<std::string_view> other_keys) {
+  sim::WaypointScenario sc;
+  const TableReader root(doc);
+  declare(root, {"kind", "name", "description", "spacecraft", "initial", "waypoints",
+                 "attitude_control", "fine_position", "guidance", "simulation"});
+  declare(root, other_keys);
+  sc.name = read_header(root, doc, kind);
+  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
+  const TableReader craft = read_waypoint_spacecraft(root, sc);
+  read_waypoint_initial(root, sc);
+  const std::vector<TableReader> wps = read_waypoint_positions(root, sc);
+
+  // [guidance] profile first: it decides the defaults of the other tables.
+  const TableReader g = root.table("guidance");
+  sc.profile = enum_or(g, "profile", sim::kGuidanceProfileNames, sim::GuidanceProfile::craft);
+  const bool paper = sc.profile == sim::GuidanceProfile::paper;
+  // The control period is needed by the craft defaults; [simulation] is read in full below.
+  const TableReader sim = root.table("simulation");
+  sc.control_period = sim.number_or("control_period", 0.1, NumberRule::positive());
+  const guidance::CraftLimits limits = waypoint_craft_limits(sc);
+
+  read_waypoint_attitude_control(root, paper, limits, sc);
+  read_waypoint_guidance_required(g, sc.mission);
+  const std::optional<TableReader> fine_table = read_waypoint_fine_position(root, paper, limits, sc.mission);
+  read_waypoint_guidance_options(g, paper, limits, sc);
+  check_waypoint_guidance_order(g, sc.mission);
+  read_waypoint_simulation(root, sim, sc);
+  root.finish();
+
+  check_waypoint_rct_authority(craft, g, fine_table, limits, sc.mission);
+  check_waypoints_reachable(wps, limits, sc);
   return sc;
 }
 

@@ -61,6 +61,253 @@ int choose_chart(const std::vector<ReachResult>& results) {
   return chart;
 }
 
+/// reach.json's record of one step of the first cell (docs/reach.md, "Outputs").
+nlohmann::json step_json(const ReachStep& st, const SafetyVerdict& verdict) {
+  nlohmann::json trials = nlohmann::json::array();
+  for (const RateTrial& t : st.trials) {
+    trials.push_back({{"c", t.c}, {"feasible", t.feasible}, {"enclosure_radius", t.enclosure_radius}});
+  }
+  return {{"index", st.index}, {"t", st.t0}, {"t_end", st.t1}, {"c", st.c},
+          {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"S", mat_json(st.S)}, {"P", mat_json(st.P)},
+          {"r", st.r},
+          {"omega_box", {{"lower", vec_json(st.omega_box.lo)}, {"upper", vec_json(st.omega_box.hi)}}},
+          {"attitude_box_radius", st.attitude_box.radius},
+          {"attitude_radius", st.attitude_radius},
+          {"omega_half_widths", vec_json(st.omega_half_widths)},
+          {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
+          {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
+          {"rigour", st.proved_rigorously ? "rigorous" : "float"},
+          {"numerical_allowance", st.numerical_allowance},
+          {"nominal_error_R", st.nominal_error_R},
+          {"nominal_error_omega", st.nominal_error_omega},
+          {"safe", verdict.step_safe.empty() ? true : static_cast<bool>(verdict.step_safe[static_cast<std::size_t>(st.index)])},
+          {"trials", trials}};
+}
+
+/// reach.json's "final": the last ball of every cell.
+nlohmann::json finals_json(const std::vector<ReachResult>& results) {
+  nlohmann::json finals = nlohmann::json::array();
+  for (const ReachResult& res : results) {
+    const ReachStep& last = res.steps.back();
+    finals.push_back({{"r", last.r}, {"attitude_radius", last.attitude_radius},
+                      {"omega_half_widths", vec_json(last.omega_half_widths)},
+                      {"wall_time_s", res.wall_time_s}});
+  }
+  return finals;
+}
+
+/// reach.json without the chart and the soundness checks (docs/reach.md, "Outputs").
+nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
+                            const std::vector<ReachResult>& results, const SafetyVerdict& verdict,
+                            double analysis_time) {
+  nlohmann::json j;
+  j["name"] = sc.name;
+  j["kind"] = "reach";
+  j["model"] = sc.model;
+  j["rate_mode"] = std::string(reach::kRateModeNames.name(sc.settings.mode));
+  j["horizon"] = sc.settings.horizon;
+  j["n_steps"] = sc.settings.steps;
+  j["cells"] = cells;
+  const ReachResult& r0 = results.front();
+  j["initial"] = {{"attitude_radius", sc.initial.attitude_radius},
+                  {"omega_radius", sc.initial.omega_radius},
+                  {"r0", r0.r0}, {"Q0", mat_json(r0.Q0)}, {"S0", mat_json(r0.S0)},
+                  {"P0", mat_json(r0.P0)}};
+  j["metric"] = std::string(reach::kMetricNames.name(sc.settings.metric));
+  j["rigour"] = std::string(reach::kRigourNames.name(sc.settings.rigour));
+  nlohmann::json steps = nlohmann::json::array();
+  for (const ReachStep& st : r0.steps) steps.push_back(step_json(st, verdict));
+  j["steps"] = steps;
+  j["final"] = finals_json(results);
+  j["verdict"] = !verdict.requested ? "not_requested" : (verdict.proved ? "safe" : "cannot_prove");
+  j["first_failure_time"] = verdict.first_failure_time >= 0.0 ? nlohmann::json(verdict.first_failure_time)
+                                                              : nlohmann::json(nullptr);
+  if (!verdict.reason.empty()) j["safety_reason"] = verdict.reason;
+  long solves = 0;  // summed over cells, so the same whichever rank solved them
+  for (const ReachResult& res : results) solves += res.sdp_solves;
+  j["sdp_solves"] = solves;
+  j["wall_time_s"] = analysis_time;
+  return j;
+}
+
+/// trajectory.csv: the first cell's nominal at every sub-step time.
+void write_trajectory_csv(const std::filesystem::path& out_dir, const ReachResult& r0) {
+  io::CsvWriter csv(out_dir / "trajectory.csv",
+                    {"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z"});
+  for (const NominalPoint& p : r0.nominal) {
+    const Eigen::Vector4d q = lie::rotation_to_quat(p.R);
+    const std::array<double, 8> row{p.t, q(0), q(1), q(2), q(3), p.omega(0), p.omega(1), p.omega(2)};
+    csv.row(row);
+  }
+  csv.close();
+}
+
+/// steps.csv: per cell and step t, c, r, Q, P, the U_i ω box and the attitude enclosure radius.
+void write_steps_csv(const std::filesystem::path& out_dir, const std::vector<ReachResult>& results) {
+  io::CsvWriter csv(out_dir / "steps.csv",
+                    {"cell", "step", "t", "t_end", "c", "r", "attitude_radius", "omega_lo_x",
+                     "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y", "omega_hi_z", "Q_xx",
+                     "Q_yy", "Q_zz", "Q_xy", "Q_xz", "Q_yz", "P_xx", "P_yy", "P_zz", "P_xy",
+                     "P_xz", "P_yz", "center_omega_x", "center_omega_y", "center_omega_z"});
+  for (std::size_t c = 0; c < results.size(); ++c) {
+    for (const ReachStep& st : results[c].steps) {
+      const Mat3& Q = st.Q;
+      const Mat3& P = st.P;
+      const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), st.t0, st.t1,
+                                    st.c, st.r, st.attitude_radius, st.omega_box.lo(0),
+                                    st.omega_box.lo(1), st.omega_box.lo(2), st.omega_box.hi(0),
+                                    st.omega_box.hi(1), st.omega_box.hi(2), Q(0, 0), Q(1, 1), Q(2, 2),
+                                    Q(0, 1), Q(0, 2), Q(1, 2), P(0, 0), P(1, 1), P(2, 2), P(0, 1),
+                                    P(0, 2), P(1, 2), st.omega(0), st.omega(1), st.omega(2)};
+      csv.row(row);
+    }
+  }
+  csv.close();
+}
+
+/// tube.csv: the state-tube segments (attitude ball radius, ω box) of the safety check.
+void write_tube_csv(const std::filesystem::path& out_dir, const std::vector<ReachResult>& results) {
+  io::CsvWriter csv(out_dir / "tube.csv", {"cell", "step", "t0", "t1", "attitude_radius", "omega_lo_x",
+                                           "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y",
+                                           "omega_hi_z"});
+  for (std::size_t c = 0; c < results.size(); ++c) {
+    for (const ReachStep& st : results[c].steps) {
+      for (const TubeSegment& s : st.state_tube) {
+        const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), s.t0, s.t1,
+                                      s.attitude.radius, s.omega.lo(0), s.omega.lo(1), s.omega.lo(2),
+                                      s.omega.hi(0), s.omega.hi(1), s.omega.hi(2)};
+        csv.row(row);
+      }
+    }
+  }
+  csv.close();
+}
+
+using BoundaryRows = std::vector<std::array<double, 7>>;
+
+/// One cell's boundary.csv rows: the boundary points of its attitude balls in the chart.
+BoundaryRows cell_boundary_rows(std::size_t c, const ReachResult& res, int chart, int points) {
+  BoundaryRows rows;
+  auto emit = [&](int step, double t, const Mat3& Q, double r, const Mat3& Rc) {
+    for (const Vec3& p : ball_boundary(Q, r, Rc, chart, points)) {
+      rows.push_back({static_cast<double>(c), static_cast<double>(step), t,
+                      static_cast<double>(chart), p(0), p(1), p(2)});
+    }
+  };
+  // The attitude projection of B_M is inside B_{Q−SP⁻¹Sᵀ} (docs/reach.md, coupled fact 3).
+  emit(0, 0.0, attitude_schur({res.Q0, res.S0, res.P0}), res.r0, res.nominal.front().R);
+  for (const ReachStep& st : res.steps) {
+    emit(st.index + 1, st.t1, attitude_schur(st.metric()), st.r, st.R);
+  }
+  return rows;
+}
+
+/// boundary.csv: the cells' boundaries computed on the scenario's threads, written in cell order.
+void write_boundary_csv(const std::filesystem::path& out_dir, const ReachScenario& sc,
+                        const std::vector<ReachResult>& results, int chart) {
+  std::vector<BoundaryRows> rows(results.size());
+  parallel::parallel_for(static_cast<long>(results.size()), sc.threads, [&](long ci) {
+    const auto c = static_cast<std::size_t>(ci);
+    rows[c] = cell_boundary_rows(c, results[c], chart, sc.boundary_points);
+  });
+  io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
+  for (const auto& cell_rows : rows) {
+    for (const auto& row : cell_rows) csv.row(row);
+  }
+  csv.close();
+}
+
+/// samples.csv: the kept sampled trajectories in chart coordinates and ω.
+void write_samples_csv(const std::filesystem::path& out_dir, const SoundnessReport& rep, int chart) {
+  io::CsvWriter csv(out_dir / "samples.csv",
+                    {"sample", "t", "r_x", "r_y", "r_z", "omega_x", "omega_y", "omega_z"});
+  for (std::size_t s = 0; s < rep.kept.size(); ++s) {
+    const SampleTrajectory& tr = rep.kept[s];
+    for (std::size_t k = 0; k < tr.t.size(); ++k) {
+      const Vec3 rr = chart_coordinates(chart, tr.R[k]);
+      const std::array<double, 8> row{static_cast<double>(s), tr.t[k], rr(0), rr(1), rr(2),
+                                      tr.omega[k](0), tr.omega[k](1), tr.omega[k](2)};
+      csv.row(row);
+    }
+  }
+  csv.close();
+}
+
+nlohmann::json soundness_json(const SoundnessReport& rep) {
+  return {{"samples", rep.samples}, {"inside", rep.inside}, {"max_ratio", rep.max_ratio},
+          {"tube_inside", rep.tube_inside}, {"tube_max_excess", rep.tube_max_excess},
+          {"wall_time_s", rep.wall_time_s}};
+}
+
+nlohmann::json adversarial_json(const AdversarialReport& worst) {
+  return {{"evaluations", worst.evaluations}, {"worst_ratio", worst.worst_ratio},
+          {"worst_ratio_time", worst.worst_ratio_time},
+          {"attitude_spread", worst.attitude_spread},
+          {"attitude_claimed", worst.attitude_claimed},
+          {"attitude_tightness", worst.attitude_claimed / worst.attitude_spread},
+          {"omega_spread", vec_json(worst.omega_spread)},
+          {"omega_claimed", vec_json(worst.omega_claimed)},
+          {"omega_tightness", vec_json(worst.omega_claimed.cwiseQuotient(worst.omega_spread))},
+          {"wall_time_s", worst.wall_time_s}};
+}
+
+/// The adversarial check's settings: the soundness sampling's step, seed and threads.
+AdversarialSettings adversarial_settings(const SoundnessSettings& soundness) {
+  AdversarialSettings adv;
+  adv.step = soundness.step;
+  adv.seed = soundness.seed;
+  adv.threads = soundness.threads;
+  return adv;
+}
+
+/// NumericalError when an optimised or a sampled initial state leaves its ball, or a sample
+/// leaves a state-tube segment or U_i.
+void throw_if_unsound(const SoundnessReport& rep, const AdversarialReport& worst) {
+  if (!(worst.worst_ratio <= 1.0 + 1e-12)) {
+    std::ostringstream os;
+    os << "soundness check failed: an optimised initial state leaves its ball (ratio "
+       << worst.worst_ratio << " at t = " << worst.worst_ratio_time << " s)";
+    throw NumericalError(os.str());
+  }
+  if (rep.inside != rep.samples) {
+    std::ostringstream os;
+    os << "soundness check failed: " << rep.samples - rep.inside << " of " << rep.samples
+       << " sampled trajectories leave their ball (first at t = " << rep.first_violation_time << " s)";
+    throw NumericalError(os.str());
+  }
+  if (rep.tube_inside != rep.samples) {
+    std::ostringstream os;
+    os << "soundness check failed: " << rep.samples - rep.tube_inside << " of " << rep.samples
+       << " sampled trajectories leave a state-tube segment or U_i (first at t = "
+       << rep.tube_first_violation_time << " s, by " << rep.tube_max_excess << ")";
+    throw NumericalError(os.str());
+  }
+}
+
+/// Soundness sampling and the adversarial check (adversarial.hpp): their keys into j,
+/// samples.csv, and reach.json written before a failed check throws.
+void run_soundness_checks(nlohmann::json& j, const ReachScenario& sc,
+                          const std::vector<InitialSet>& cells,
+                          const std::vector<ReachResult>& results, int chart,
+                          const std::filesystem::path& out_dir) {
+  const ClosedLoop& loop = *sc.loop;
+  const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
+  io::throw_if_interrupted();
+  j["soundness"] = soundness_json(rep);
+  write_samples_csv(out_dir, rep, chart);
+  const AdversarialReport worst = adversarial_check(loop, cells, results, adversarial_settings(sc.soundness));
+  io::throw_if_interrupted();
+  j["adversarial"] = adversarial_json(worst);
+  io::write_json(out_dir / "reach.json", j);
+  throw_if_unsound(rep, worst);
+}
+
+void throw_if_unsafe(const SafetyVerdict& verdict) {
+  if (verdict.requested && !verdict.proved) {
+    throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);
+  }
+}
+
 }  // namespace
 
 nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::path& out_dir,
@@ -71,222 +318,41 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
     io::remove_outputs(out_dir, {"reach.json", "trajectory.csv", "steps.csv", "tube.csv",
                                  "boundary.csv", "samples.csv"});
   }
-  const ClosedLoop& loop = *sc.loop;
   const std::vector<InitialSet> cells =
       partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);
-  const std::vector<ReachResult> results = run_partitioned(loop, cells, sc.settings, sc.threads, world);
+  const std::vector<ReachResult> results = run_partitioned(*sc.loop, cells, sc.settings, sc.threads, world);
   // SIGINT / SIGTERM stop the analysis between its stages (io/interruption.hpp).
   io::throw_if_interrupted();
   const double analysis_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const SafetyVerdict verdict = verify_safety(sc.safety, results);
-
-  nlohmann::json j;
-  j["name"] = sc.name;
-  j["kind"] = "reach";
-  j["model"] = sc.model;
-  j["rate_mode"] = std::string(reach::kRateModeNames.name(sc.settings.mode));
-  j["horizon"] = sc.settings.horizon;
-  j["n_steps"] = sc.settings.steps;
-  j["cells"] = cells.size();
-  const ReachResult& r0 = results.front();
-  j["initial"] = {{"attitude_radius", sc.initial.attitude_radius},
-                  {"omega_radius", sc.initial.omega_radius},
-                  {"r0", r0.r0}, {"Q0", mat_json(r0.Q0)}, {"S0", mat_json(r0.S0)},
-                  {"P0", mat_json(r0.P0)}};
-  j["metric"] = std::string(reach::kMetricNames.name(sc.settings.metric));
-  j["rigour"] = std::string(reach::kRigourNames.name(sc.settings.rigour));
-  nlohmann::json steps = nlohmann::json::array();
-  for (const ReachStep& st : r0.steps) {
-    nlohmann::json trials = nlohmann::json::array();
-    for (const RateTrial& t : st.trials) {
-      trials.push_back({{"c", t.c}, {"feasible", t.feasible}, {"enclosure_radius", t.enclosure_radius}});
-    }
-    steps.push_back({{"index", st.index}, {"t", st.t0}, {"t_end", st.t1}, {"c", st.c},
-                     {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"S", mat_json(st.S)}, {"P", mat_json(st.P)},
-                     {"r", st.r},
-                     {"omega_box", {{"lower", vec_json(st.omega_box.lo)}, {"upper", vec_json(st.omega_box.hi)}}},
-                     {"attitude_box_radius", st.attitude_box.radius},
-                     {"attitude_radius", st.attitude_radius},
-                     {"omega_half_widths", vec_json(st.omega_half_widths)},
-                     {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
-                     {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
-                     {"rigour", st.proved_rigorously ? "rigorous" : "float"},
-                     {"numerical_allowance", st.numerical_allowance},
-                     {"nominal_error_R", st.nominal_error_R},
-                     {"nominal_error_omega", st.nominal_error_omega},
-                     {"safe", verdict.step_safe.empty() ? true : static_cast<bool>(verdict.step_safe[static_cast<std::size_t>(st.index)])},
-                     {"trials", trials}});
-  }
-  j["steps"] = steps;
-  nlohmann::json finals = nlohmann::json::array();
-  for (const ReachResult& res : results) {
-    const ReachStep& last = res.steps.back();
-    finals.push_back({{"r", last.r}, {"attitude_radius", last.attitude_radius},
-                      {"omega_half_widths", vec_json(last.omega_half_widths)},
-                      {"wall_time_s", res.wall_time_s}});
-  }
-  j["final"] = finals;
-  j["verdict"] = !verdict.requested ? "not_requested" : (verdict.proved ? "safe" : "cannot_prove");
-  j["first_failure_time"] = verdict.first_failure_time >= 0.0 ? nlohmann::json(verdict.first_failure_time)
-                                                              : nlohmann::json(nullptr);
-  if (!verdict.reason.empty()) j["safety_reason"] = verdict.reason;
-  long solves = 0;  // summed over cells, so the same whichever rank solved them
-  for (const ReachResult& res : results) solves += res.sdp_solves;
-  j["sdp_solves"] = solves;
-  j["wall_time_s"] = analysis_time;
+  nlohmann::json j = summary_json(sc, cells.size(), results, verdict, analysis_time);
 
   if (!world.root()) {  // the other ranks reach the same verdict and exit code but write nothing
     j["chart"] = choose_chart(results);
-    if (verdict.requested && !verdict.proved) {
-      throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);
-    }
+    throw_if_unsafe(verdict);
     return j;
   }
-
-  // CSV outputs.
   io::throw_if_interrupted();
-  {
-    io::CsvWriter csv(out_dir / "trajectory.csv",
-                      {"t", "q_w", "q_x", "q_y", "q_z", "omega_x", "omega_y", "omega_z"});
-    for (const NominalPoint& p : r0.nominal) {
-      const Eigen::Vector4d q = lie::rotation_to_quat(p.R);
-      const std::array<double, 8> row{p.t, q(0), q(1), q(2), q(3), p.omega(0), p.omega(1), p.omega(2)};
-      csv.row(row);
-    }
-    csv.close();
-  }
-  {
-    io::CsvWriter csv(out_dir / "steps.csv",
-                      {"cell", "step", "t", "t_end", "c", "r", "attitude_radius", "omega_lo_x",
-                       "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y", "omega_hi_z", "Q_xx",
-                       "Q_yy", "Q_zz", "Q_xy", "Q_xz", "Q_yz", "P_xx", "P_yy", "P_zz", "P_xy",
-                       "P_xz", "P_yz", "center_omega_x", "center_omega_y", "center_omega_z"});
-    for (std::size_t c = 0; c < results.size(); ++c) {
-      for (const ReachStep& st : results[c].steps) {
-        const Mat3& Q = st.Q;
-        const Mat3& P = st.P;
-        const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), st.t0, st.t1,
-                                      st.c, st.r, st.attitude_radius, st.omega_box.lo(0),
-                                      st.omega_box.lo(1), st.omega_box.lo(2), st.omega_box.hi(0),
-                                      st.omega_box.hi(1), st.omega_box.hi(2), Q(0, 0), Q(1, 1), Q(2, 2),
-                                      Q(0, 1), Q(0, 2), Q(1, 2), P(0, 0), P(1, 1), P(2, 2), P(0, 1),
-                                      P(0, 2), P(1, 2), st.omega(0), st.omega(1), st.omega(2)};
-        csv.row(row);
-      }
-    }
-    csv.close();
-  }
-  {
-    io::CsvWriter csv(out_dir / "tube.csv", {"cell", "step", "t0", "t1", "attitude_radius", "omega_lo_x",
-                                             "omega_lo_y", "omega_lo_z", "omega_hi_x", "omega_hi_y",
-                                             "omega_hi_z"});
-    for (std::size_t c = 0; c < results.size(); ++c) {
-      for (const ReachStep& st : results[c].steps) {
-        for (const TubeSegment& s : st.state_tube) {
-          const std::vector<double> row{static_cast<double>(c), static_cast<double>(st.index), s.t0, s.t1,
-                                        s.attitude.radius, s.omega.lo(0), s.omega.lo(1), s.omega.lo(2),
-                                        s.omega.hi(0), s.omega.hi(1), s.omega.hi(2)};
-          csv.row(row);
-        }
-      }
-    }
-    csv.close();
-  }
+  write_trajectory_csv(out_dir, results.front());
+  write_steps_csv(out_dir, results);
+  write_tube_csv(out_dir, results);
 
   // Boundary representation in one exp chart (needs every ball inside it).
   io::throw_if_interrupted();
   const int chart = choose_chart(results);
   j["chart"] = chart;
-  if (sc.boundary_points > 0) {
-    // Cells' boundaries computed on the scenario's threads, written in cell order.
-    std::vector<std::vector<std::array<double, 7>>> rows(results.size());
-    parallel::parallel_for(static_cast<long>(results.size()), sc.threads, [&](long ci) {
-      const auto c = static_cast<std::size_t>(ci);
-      const ReachResult& res = results[c];
-      auto emit = [&](int step, double t, const Mat3& Q, double r, const Mat3& Rc) {
-        for (const Vec3& p : ball_boundary(Q, r, Rc, chart, sc.boundary_points)) {
-          rows[c].push_back({static_cast<double>(c), static_cast<double>(step), t,
-                             static_cast<double>(chart), p(0), p(1), p(2)});
-        }
-      };
-      // The attitude projection of B_M is inside B_{Q−SP⁻¹Sᵀ} (docs/reach.md, coupled fact 3).
-      emit(0, 0.0, attitude_schur({res.Q0, res.S0, res.P0}), res.r0, res.nominal.front().R);
-      for (const ReachStep& st : res.steps) {
-        emit(st.index + 1, st.t1, attitude_schur(st.metric()), st.r, st.R);
-      }
-    });
-    io::CsvWriter csv(out_dir / "boundary.csv", {"cell", "step", "t", "chart", "r_x", "r_y", "r_z"});
-    for (const auto& cell_rows : rows) {
-      for (const auto& row : cell_rows) csv.row(row);
-    }
-    csv.close();
-  }
+  if (sc.boundary_points > 0) write_boundary_csv(out_dir, sc, results, chart);
 
-  // Soundness sampling.
   io::throw_if_interrupted();
   if (sc.soundness.samples > 0) {
-    const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
-    io::throw_if_interrupted();
-    j["soundness"] = {{"samples", rep.samples}, {"inside", rep.inside}, {"max_ratio", rep.max_ratio},
-                      {"tube_inside", rep.tube_inside}, {"tube_max_excess", rep.tube_max_excess},
-                      {"wall_time_s", rep.wall_time_s}};
-    io::CsvWriter csv(out_dir / "samples.csv",
-                      {"sample", "t", "r_x", "r_y", "r_z", "omega_x", "omega_y", "omega_z"});
-    for (std::size_t s = 0; s < rep.kept.size(); ++s) {
-      const SampleTrajectory& tr = rep.kept[s];
-      for (std::size_t k = 0; k < tr.t.size(); ++k) {
-        const Vec3 rr = chart_coordinates(chart, tr.R[k]);
-        const std::array<double, 8> row{static_cast<double>(s), tr.t[k], rr(0), rr(1), rr(2),
-                                        tr.omega[k](0), tr.omega[k](1), tr.omega[k](2)};
-        csv.row(row);
-      }
-    }
-    csv.close();
-    // The adversarial check: optimised initial states instead of samples (adversarial.hpp).
-    AdversarialSettings adv;
-    adv.step = sc.soundness.step;
-    adv.seed = sc.soundness.seed;
-    adv.threads = sc.soundness.threads;
-    const AdversarialReport worst = adversarial_check(loop, cells, results, adv);
-    io::throw_if_interrupted();
-    j["adversarial"] = {{"evaluations", worst.evaluations}, {"worst_ratio", worst.worst_ratio},
-                        {"worst_ratio_time", worst.worst_ratio_time},
-                        {"attitude_spread", worst.attitude_spread},
-                        {"attitude_claimed", worst.attitude_claimed},
-                        {"attitude_tightness", worst.attitude_claimed / worst.attitude_spread},
-                        {"omega_spread", vec_json(worst.omega_spread)},
-                        {"omega_claimed", vec_json(worst.omega_claimed)},
-                        {"omega_tightness", vec_json(worst.omega_claimed.cwiseQuotient(worst.omega_spread))},
-                        {"wall_time_s", worst.wall_time_s}};
-    io::write_json(out_dir / "reach.json", j);
-    if (!(worst.worst_ratio <= 1.0 + 1e-12)) {
-      std::ostringstream os;
-      os << "soundness check failed: an optimised initial state leaves its ball (ratio "
-         << worst.worst_ratio << " at t = " << worst.worst_ratio_time << " s)";
-      throw NumericalError(os.str());
-    }
-    if (rep.inside != rep.samples) {
-      std::ostringstream os;
-      os << "soundness check failed: " << rep.samples - rep.inside << " of " << rep.samples
-         << " sampled trajectories leave their ball (first at t = " << rep.first_violation_time << " s)";
-      throw NumericalError(os.str());
-    }
-    if (rep.tube_inside != rep.samples) {
-      std::ostringstream os;
-      os << "soundness check failed: " << rep.samples - rep.tube_inside << " of " << rep.samples
-         << " sampled trajectories leave a state-tube segment or U_i (first at t = "
-         << rep.tube_first_violation_time << " s, by " << rep.tube_max_excess << ")";
-      throw NumericalError(os.str());
-    }
+    run_soundness_checks(j, sc, cells, results, chart, out_dir);
   } else {
     j["soundness"] = {{"samples", 0}, {"inside", 0}};
   }
   io::throw_if_interrupted();
   io::write_json(out_dir / "reach.json", j);
-  if (verdict.requested && !verdict.proved) {
-    throw VerificationFailure("reach: safety cannot be proved: " + verdict.reason);
-  }
+  throw_if_unsafe(verdict);
   return j;
 }
 

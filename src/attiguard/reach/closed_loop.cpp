@@ -64,7 +64,8 @@ Box3 ClosedLoop::omega_dot_enclosure(const AttitudeBall& att, const Box3& box) c
 
 // ---- LinearOmegaLoop -------------------------------------------------------------------------
 
-LinearOmegaLoop::LinearOmegaLoop(const Mat3& M) : M_(M) {
+LinearOmegaLoop::LinearOmegaLoop(const Mat3& M)
+    : ClosedLoop({.lmi_depends_on_attitude = false, .omega_flow_affine = true}), M_(M) {
   if (!M.allFinite()) throw InputError("linear_omega: non-finite matrix");
 }
 Vec3 LinearOmegaLoop::omega_dot(const Mat3&, const Vec3& omega) const { return M_ * omega; }
@@ -87,7 +88,8 @@ LmiEnclosure LinearOmegaLoop::lmi_enclosure(const AttitudeBall&, const Box3& box
 // ---- RigidBodyLoop ---------------------------------------------------------------------------
 
 RigidBodyLoop::RigidBodyLoop(const Mat3& J, const Vec3& torque_b)
-    : body_(J), tau_(torque_b), G_(gyroscopic_basis(J, body_.inertia_inverse())) {
+    : ClosedLoop({.lmi_depends_on_attitude = false, .omega_flow_affine = false}),
+      body_(J), tau_(torque_b), G_(gyroscopic_basis(J, body_.inertia_inverse())) {
   if (!torque_b.allFinite()) throw InputError("rigid body: non-finite torque");
 }
 std::string RigidBodyLoop::name() const { return tau_.isZero(0.0) ? "free" : "constant_torque"; }
@@ -119,7 +121,8 @@ LmiEnclosure RigidBodyLoop::lmi_enclosure(const AttitudeBall&, const Box3& box) 
 // ---- PdLoop ----------------------------------------------------------------------------------
 
 PdLoop::PdLoop(const Mat3& J, double kp, double kd, const Mat3& R_g)
-    : body_(J), Rg_(R_g), gains_{kp, kd}, G_(gyroscopic_basis(J, body_.inertia_inverse())) {
+    : ClosedLoop({.lmi_depends_on_attitude = true, .omega_flow_affine = false}),
+      body_(J), Rg_(R_g), gains_{kp, kd}, G_(gyroscopic_basis(J, body_.inertia_inverse())) {
   if (!std::isfinite(kp) || !std::isfinite(kd) || !R_g.allFinite()) {
     throw InputError("pd: non-finite gains or reference");
   }

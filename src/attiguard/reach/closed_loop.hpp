@@ -62,10 +62,10 @@ class ClosedLoop {
   /// LMI data over the same set (see LmiEnclosure).
   [[nodiscard]] virtual LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const = 0;
   /// True when A or B depends on R (then the LMI needs an attitude enclosure).
-  [[nodiscard]] virtual bool lmi_depends_on_attitude() const = 0;
+  [[nodiscard]] bool lmi_depends_on_attitude() const noexcept { return structure_.lmi_depends_on_attitude; }
   /// True when X_ω = M ω + b independently of R: the ω-flow is affine (ω-reach sets of convex
   /// sets stay convex).
-  [[nodiscard]] virtual bool omega_flow_affine() const = 0;
+  [[nodiscard]] bool omega_flow_affine() const noexcept { return structure_.omega_flow_affine; }
   /// X_ω as the exact polynomial it is (polynomial_field.hpp), read off omega_dot: what the
   /// bound on the nominal's integration error differentiates. Every built-in loop is of that
   /// form; throws NumericalError for a loop that is not.
@@ -73,6 +73,17 @@ class ClosedLoop {
 
   /// Mean-value enclosure of X_ω over the set: X_ω(R_c, ω_c) ± (‖row_k |A|‖ ρ + |B| rad(ω)).
   [[nodiscard]] Box3 omega_dot_enclosure(const AttitudeBall& att, const Box3& box) const;
+
+ protected:
+  /// The structure of a concrete loop's X_ω, fixed by its model.
+  struct Structure {
+    bool lmi_depends_on_attitude{false};  ///< see lmi_depends_on_attitude()
+    bool omega_flow_affine{false};        ///< see omega_flow_affine()
+  };
+  explicit ClosedLoop(Structure structure) noexcept : structure_(structure) {}
+
+ private:
+  Structure structure_;
 };
 
 /// X_ω = M ω (paper, Sec. 6).
@@ -86,8 +97,6 @@ class LinearOmegaLoop final : public ClosedLoop {
   [[nodiscard]] IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
-  [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
-  [[nodiscard]] bool omega_flow_affine() const override { return true; }
   [[nodiscard]] const Mat3& matrix() const noexcept { return M_; }
 
  private:
@@ -105,8 +114,6 @@ class RigidBodyLoop final : public ClosedLoop {
   [[nodiscard]] IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
-  [[nodiscard]] bool lmi_depends_on_attitude() const override { return false; }
-  [[nodiscard]] bool omega_flow_affine() const override { return false; }
 
  private:
   dynamics::RigidBody body_;
@@ -125,8 +132,6 @@ class PdLoop final : public ClosedLoop {
   [[nodiscard]] IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
-  [[nodiscard]] bool lmi_depends_on_attitude() const override { return true; }
-  [[nodiscard]] bool omega_flow_affine() const override { return false; }
   /// Bound on ‖A(R, ·) − A_center‖₂ over the attitude ball (A does not depend on ω).
   [[nodiscard]] double a_deviation_bound(const AttitudeBall& att) const;
 

@@ -212,14 +212,217 @@ double enclosure_radius(const StateMetric& m, double r) {
   return r / std::sqrt(std::min(lambda_min(attitude_schur(m)), lambda_min(omega_schur(m))));
 }
 
-/// Deviation bounds (tube.hpp) of every state in B_M(x, r): the projections of coupled facts 2, 3.
+/// Deviation bounds (deviation.hpp) of every state in B_M(x, r): the projections of coupled
+/// facts 2, 3.
 Deviation ball_deviation(const StateMetric& m, double r) {
   const Mat3 Pw = omega_schur(m);
   Deviation d;
-  d.head<3>() = p_ball_half_widths(Pw, r);
-  d(3) = r / std::sqrt(lambda_min(Pw));
-  d(4) = r / std::sqrt(lambda_min(attitude_schur(m)));
+  d.d_omega_b = p_ball_half_widths(Pw, r);
+  d.e_omega_b = r / std::sqrt(lambda_min(Pw));
+  d.e_R = r / std::sqrt(lambda_min(attitude_schur(m)));
   return d;
+}
+
+/// The nominal's times: every sub-step boundary of every step, then the horizon.
+std::vector<double> sub_step_times(const ConReachSettings& s) {
+  const int N = s.steps;
+  const int m = s.substeps;
+  const double dt = s.horizon / N;
+  std::vector<double> times;
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < m; ++j) times.push_back(i * dt + j * dt / m);
+  }
+  times.push_back(s.horizon);
+  return times;
+}
+
+/// The nominal at every sub-step boundary; its integration error is bounded by the tube.
+std::vector<NominalPoint> nominal_points(const ClosedLoop& loop, const InitialSet& initial,
+                                         const std::vector<double>& times, double h) {
+  std::vector<NominalPoint> nominal(times.size());
+  simulate(loop, initial.R0, initial.omega0, times, h,
+           [&](std::size_t k, const Mat3& R, const Vec3& w) { nominal[k] = {times[k], R, w}; });
+  for (const auto& p : nominal) {
+    if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
+  }
+  return nominal;
+}
+
+/// What every step of one run shares.
+struct RunFrame {
+  const ClosedLoop& loop;
+  const ConReachSettings& s;
+  const std::vector<double>& times;
+  double a;      ///< attitude_radius of the initial set
+  double b;      ///< omega_radius of the initial set
+  bool coupled;  ///< MetricKind::coupled
+  bool att_dep;  ///< the loop's LMI depends on R
+  double dt;     ///< T/N
+};
+
+/// Coupled metric, step 0: the radius r_0' = metric_cover_radius(M_1, a, b) of the initial set
+/// re-expressed in the step's own metric (docs/reach.md, "Coupled metrics").
+double recovered_radius(const RunFrame& f, const MetricSolution& sol) {
+  return metric_cover_radius({sol.Q, sol.S, sol.P}, f.a, f.b);
+}
+
+/// The deviation the LMI tube U_i starts from: the flowed curves — coupled: at step 0 the
+/// straight curves in the initial set (its state tube), later the M_i-geodesics from the centre,
+/// inside B_{M_i}(x_i, r_i) (coupled fact 4); product: the ball's ω bounds unless the ω-flow is
+/// affine, and the attitude radius r_i/√q_floor when the LMI depends on R.
+Deviation lmi_deviation(const RunFrame& f, int i, const Deviation& z_state, const Deviation& ball,
+                        double r, double q_floor) {
+  Deviation z_lmi = z_state;
+  if (f.coupled) {
+    if (i > 0) z_lmi = ball;
+  } else {
+    if (!f.loop.omega_flow_affine()) {
+      z_lmi.d_omega_b = ball.d_omega_b;
+      z_lmi.e_omega_b = ball.e_omega_b;
+    }
+    if (f.att_dep) z_lmi.e_R = r / std::sqrt(q_floor);
+  }
+  return z_lmi;
+}
+
+/// The metric of one step and the LMI tube U_i it was certified on.
+struct StepChoice {
+  Choice choice;
+  TubeResult lmi_tube;
+  bool lmi_exact{false};
+  double lmi_rho{0.0};
+};
+
+/// The state tube of a step and the ball it started from.
+struct StepStart {
+  std::span<const NominalPoint> span;  ///< the step's nominal points (m + 1)
+  Deviation ball;                      ///< bounds of B_{M_i}(x_i, r_i)
+  Deviation z_state;                   ///< the state tube's start
+  TubeResult state_tube;
+};
+
+/// choose_metric, with a VerificationFailure naming the step and its interval.
+Choice choose_step(const LmiEnclosure& enc, const StateMetric& M, const ConReachSettings& s,
+                   const MetricSdpSettings& sdp,
+                   const std::function<double(const MetricSolution&)>& size_of, const double* c_prev,
+                   const ReachStep& st) {
+  try {
+    return choose_metric(enc, M, s, sdp, size_of, c_prev);
+  } catch (const VerificationFailure& e) {
+    std::ostringstream os;
+    os << "reach: step " << st.index << " on [" << st.t0 << ", " << st.t1 << "] s cannot be proved: "
+       << e.what();
+    throw VerificationFailure(os.str());
+  }
+}
+
+/// The step's metric (docs/reach.md, "Rate selection"), over U_i; for a loop whose LMI depends on
+/// R with the product metric, U_i is redone once when the chosen Q falls below the floor.
+StepChoice choose_step_metric(const RunFrame& f, const ReachStep& st, const StepStart& start,
+                              const StateMetric& M, double r, const double* c_prev) {
+  const ConReachSettings& s = f.s;
+  const bool recover = f.coupled && st.index == 0;
+  auto radius_for = [&](const MetricSolution& sol) { return recover ? recovered_radius(f, sol) : r; };
+  // Product metric: the ball at t_{i+1}. Coupled metric: the ball at T if the rate held for
+  // the rest of the horizon, because the metric can only shrink afterwards (M_{i+1} ⪯ M_i):
+  // a metric that buys a lower rate pays for it once, and the rate pays back on every step.
+  const double lookahead = f.coupled ? s.horizon - st.t0 : f.dt;
+  auto size_of = [&](const MetricSolution& sol) {
+    return enclosure_radius({sol.Q, sol.S, sol.P}, radius_for(sol) * std::exp(sol.c * lookahead));
+  };
+  MetricSdpSettings sdp = s.sdp;
+  sdp.coupled = f.coupled;
+  sdp.rigorous = s.rigour == Rigour::rigorous;
+  double q_floor = (f.att_dep && !f.coupled) ? s.attitude_floor_ratio * lambda_min(M.Q) : s.sdp.q_floor;
+  StepChoice out;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Deviation z_lmi = lmi_deviation(f, st.index, start.z_state, start.ball, r, q_floor);
+    out.lmi_tube = (z_lmi == start.z_state) ? start.state_tube : propagate_tube(f.loop, start.span, z_lmi);
+    const LmiEnclosure enc = f.loop.lmi_enclosure(out.lmi_tube.attitude_hull, out.lmi_tube.omega_hull);
+    sdp.q_floor = q_floor;
+    out.choice = choose_step(enc, M, s, sdp, size_of, c_prev, st);
+    out.lmi_exact = enc.exact;
+    out.lmi_rho = enc.rho;
+    const double lq = lambda_min(out.choice.sol.Q);
+    if (f.coupled || !f.att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
+    if (pass == 1) throw NumericalError("ConReach: attitude enclosure of the metric ball is inconsistent");
+    q_floor = lq * (1.0 - 1e-9);  // fallback metric below the floor: redo U_i with its λ_min
+  }
+  return out;
+}
+
+/// U_i and the chosen (c, Q, S, P) into the step.
+void record_choice(ReachStep& st, const StepChoice& chosen) {
+  const Choice& ch = chosen.choice;
+  st.lmi_exact = chosen.lmi_exact;
+  st.lmi_rho = chosen.lmi_rho;
+  st.omega_box = chosen.lmi_tube.omega_hull;
+  st.attitude_box = chosen.lmi_tube.attitude_hull;
+  st.c_identity = ch.c_identity;
+  st.c = ch.sol.c;
+  st.Q = ch.sol.Q;
+  st.S = ch.sol.S;
+  st.P = ch.sol.P;
+  st.fallback = ch.fallback;
+  st.proved_rigorously = ch.sol.proved;
+  st.sdp_solves = ch.solves;
+  st.trials = ch.trials;
+}
+
+/// The ball at t_{i+1}: r_{i+1} = r_i e^{c Δt} + the nominal's error over the step in the new
+/// metric. The ball's centre is the computed nominal point; the exact trajectory from the previous
+/// centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in M within
+/// metric_cover_radius(M, e_R, e_ω) (docs/reach.md, "Nominal error bound").
+void close_step(ReachStep& st, const Deviation& e, double r, double dt, const NominalPoint& end) {
+  st.nominal_error_R = e.e_R;
+  st.nominal_error_omega = e.e_omega_b;
+  st.numerical_allowance = metric_cover_radius(st.metric(), e.e_R, e.e_omega_b) * (1.0 + 1e-12);
+  st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
+  st.R = end.R;
+  st.omega = end.omega;
+  st.attitude_radius = attitude_enclosure_radius(attitude_schur(st.metric()), st.r);
+  st.omega_half_widths = p_ball_half_widths(omega_schur(st.metric()), st.r);
+  if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite() || !st.S.allFinite()) {
+    std::ostringstream os;
+    os << "ConReach: non-finite ball at t = " << st.t1 << " s";
+    throw NumericalError(os.str());
+  }
+}
+
+/// Step i of Algorithm 1 from the ball B_M(x_i, r): the state tube (its end carried into
+/// `carried`), the metric over U_i, the ball at t_{i+1}.
+ReachStep reach_step(const RunFrame& f, int i, const StateMetric& M, double r, Deviation& carried,
+                     ReachResult& res) {
+  const int m = f.s.substeps;
+  ReachStep st;
+  st.index = i;
+  st.t0 = f.times[static_cast<std::size_t>(i * m)];
+  st.t1 = f.times[static_cast<std::size_t>((i + 1) * m)];
+  StepStart start{std::span<const NominalPoint>(res.nominal.data() + static_cast<std::ptrdiff_t>(i) * m,
+                                                static_cast<std::size_t>(m) + 1),
+                  ball_deviation(M, r), Deviation{}, TubeResult{}};
+  start.z_state = carried.min(start.ball);
+  start.state_tube = propagate_tube(f.loop, start.span, start.z_state);
+  carried = start.state_tube.end;
+  st.state_tube = start.state_tube.segments;
+
+  const double c_prev = res.steps.empty() ? 0.0 : res.steps.back().c;
+  const StepChoice chosen = choose_step_metric(f, st, start, M, r, res.steps.empty() ? nullptr : &c_prev);
+  record_choice(st, chosen);
+  res.sdp_solves += chosen.choice.solves;
+  // Coupled metric, step 0: the initial ball is re-expressed in the new metric M_1 itself,
+  // B_{M_1}(x_0, r_0'), joined to the centre by the straight curves (R0 exp(sŵ), ω0 + sΔω)
+  // inside the initial set (docs/reach.md, "Coupled metrics"): U_0 is the flow of the initial
+  // set and M_1 ⪯ M_0 is only a normalisation.
+  if (f.coupled && i == 0) {
+    r = recovered_radius(f, chosen.choice.sol);
+    res.r0 = r;
+    res.Q0 = st.Q;
+    res.S0 = st.S;
+    res.P0 = st.P;
+  }
+  close_step(st, start.state_tube.nominal_error, r, f.dt, res.nominal[static_cast<std::size_t>((i + 1) * m)]);
+  return st;
 }
 
 }  // namespace
@@ -233,134 +436,16 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   res.P0 = initial.P0;
   res.r0 = std::sqrt(initial.attitude_radius * initial.attitude_radius +
                      lambda_max(initial.P0) * initial.omega_radius * initial.omega_radius);
-  const int N = s.steps;
-  const int m = s.substeps;
-  const double dt = s.horizon / N;
+  const std::vector<double> times = sub_step_times(s);
+  res.nominal = nominal_points(loop, initial, times, s.integrator_step);
 
-  // Nominal at every sub-step boundary; its integration error is bounded by the tube.
-  std::vector<double> times;
-  for (int i = 0; i < N; ++i) {
-    for (int j = 0; j < m; ++j) times.push_back(i * dt + j * dt / m);
-  }
-  times.push_back(s.horizon);
-  res.nominal.resize(times.size());
-  simulate(loop, initial.R0, initial.omega0, times, s.integrator_step,
-           [&](std::size_t k, const Mat3& R, const Vec3& w) { res.nominal[k] = {times[k], R, w}; });
-  for (const auto& p : res.nominal) {
-    if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
-  }
-
-  const bool coupled = s.metric == MetricKind::coupled;
+  const RunFrame frame{loop, s, times, initial.attitude_radius, initial.omega_radius,
+                       s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude(), s.horizon / s.steps};
   StateMetric M{Mat3::Identity(), Mat3::Zero(), initial.P0};
   double r = res.r0;
-  const double a = initial.attitude_radius;
-  const double b = initial.omega_radius;
-  Deviation carried;
-  carried << b, b, b, b, a;
-  const bool att_dep = loop.lmi_depends_on_attitude();
-
-  for (int i = 0; i < N; ++i) {
-    ReachStep st;
-    st.index = i;
-    st.t0 = times[static_cast<std::size_t>(i * m)];
-    st.t1 = times[static_cast<std::size_t>((i + 1) * m)];
-    const std::span<const NominalPoint> span(res.nominal.data() + static_cast<std::ptrdiff_t>(i) * m,
-                                             static_cast<std::size_t>(m) + 1);
-    const Deviation ball = ball_deviation(M, r);
-    const Deviation z_state = carried.cwiseMin(ball);
-    const TubeResult state_tube = propagate_tube(loop, span, z_state);
-    carried = state_tube.end;
-    st.state_tube = state_tube.segments;
-
-    // Coupled metric, step 0: the initial ball is re-expressed in the new metric M_1 itself,
-    // B_{M_1}(x_0, r_0'), r_0' = metric_cover_radius(M_1, a, b), joined to the centre by the
-    // straight curves (R0 exp(sŵ), ω0 + sΔω) inside the initial set (docs/reach.md, "Coupled
-    // metrics"): U_0 is the flow of the initial set and M_1 ⪯ M_0 is only a normalisation.
-    const bool recover = coupled && i == 0;
-    auto radius_for = [&](const MetricSolution& sol) {
-      return recover ? metric_cover_radius({sol.Q, sol.S, sol.P}, a, b) : r;
-    };
-    // Product metric: the ball at t_{i+1}. Coupled metric: the ball at T if the rate held for
-    // the rest of the horizon, because the metric can only shrink afterwards (M_{i+1} ⪯ M_i):
-    // a metric that buys a lower rate pays for it once, and the rate pays back on every step.
-    const double lookahead = coupled ? s.horizon - st.t0 : dt;
-    auto size_of = [&](const MetricSolution& sol) {
-      return enclosure_radius({sol.Q, sol.S, sol.P}, radius_for(sol) * std::exp(sol.c * lookahead));
-    };
-
-    MetricSdpSettings sdp = s.sdp;
-    sdp.coupled = coupled;
-    sdp.rigorous = s.rigour == Rigour::rigorous;
-    double q_floor = (att_dep && !coupled) ? s.attitude_floor_ratio * lambda_min(M.Q) : s.sdp.q_floor;
-    Choice ch;
-    TubeResult lmi_tube;
-    for (int pass = 0; pass < 2; ++pass) {
-      Deviation z_lmi = z_state;
-      if (coupled) {
-        // The flowed curves: at step 0 the straight curves in the initial set (its state tube);
-        // later the M_i-geodesics from the centre, inside B_{M_i}(x_i, r_i) (coupled fact 4).
-        if (i > 0) z_lmi = ball;
-      } else {
-        if (!loop.omega_flow_affine()) z_lmi.head<4>() = ball.head<4>();
-        if (att_dep) z_lmi(4) = r / std::sqrt(q_floor);
-      }
-      lmi_tube = (z_lmi == z_state) ? state_tube : propagate_tube(loop, span, z_lmi);
-      const LmiEnclosure enc = loop.lmi_enclosure(lmi_tube.attitude_hull, lmi_tube.omega_hull);
-      sdp.q_floor = q_floor;
-      const double c_prev = res.steps.empty() ? 0.0 : res.steps.back().c;
-      try {
-        ch = choose_metric(enc, M, s, sdp, size_of, res.steps.empty() ? nullptr : &c_prev);
-      } catch (const VerificationFailure& e) {
-        std::ostringstream os;
-        os << "reach: step " << i << " on [" << st.t0 << ", " << st.t1 << "] s cannot be proved: "
-           << e.what();
-        throw VerificationFailure(os.str());
-      }
-      st.lmi_exact = enc.exact;
-      st.lmi_rho = enc.rho;
-      const double lq = lambda_min(ch.sol.Q);
-      if (coupled || !att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
-      if (pass == 1) throw NumericalError("ConReach: attitude enclosure of the metric ball is inconsistent");
-      q_floor = lq * (1.0 - 1e-9);  // fallback metric below the floor: redo U_i with its λ_min
-    }
-    st.omega_box = lmi_tube.omega_hull;
-    st.attitude_box = lmi_tube.attitude_hull;
-    st.c_identity = ch.c_identity;
-    st.c = ch.sol.c;
-    st.Q = ch.sol.Q;
-    st.S = ch.sol.S;
-    st.P = ch.sol.P;
-    st.fallback = ch.fallback;
-    st.proved_rigorously = ch.sol.proved;
-    st.sdp_solves = ch.solves;
-    st.trials = ch.trials;
-    res.sdp_solves += ch.solves;
-    if (recover) {
-      r = radius_for(ch.sol);
-      res.r0 = r;
-      res.Q0 = st.Q;
-      res.S0 = st.S;
-      res.P0 = st.P;
-    }
-
-    const std::size_t k1 = static_cast<std::size_t>((i + 1) * m);
-    // The ball's centre is the computed nominal point; the exact trajectory from the previous
-    // centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in M within
-    // metric_cover_radius(M, e_R, e_ω) (docs/reach.md, "Nominal error bound").
-    const Deviation& e = state_tube.nominal_error;
-    st.nominal_error_R = e(4);
-    st.nominal_error_omega = e(3);
-    st.numerical_allowance = metric_cover_radius(st.metric(), e(4), e(3)) * (1.0 + 1e-12);
-    st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
-    st.R = res.nominal[k1].R;
-    st.omega = res.nominal[k1].omega;
-    st.attitude_radius = attitude_enclosure_radius(attitude_schur(st.metric()), st.r);
-    st.omega_half_widths = p_ball_half_widths(omega_schur(st.metric()), st.r);
-    if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite() || !st.S.allFinite()) {
-      std::ostringstream os;
-      os << "ConReach: non-finite ball at t = " << st.t1 << " s";
-      throw NumericalError(os.str());
-    }
+  Deviation carried = Deviation::of_balls(initial.attitude_radius, initial.omega_radius);
+  for (int i = 0; i < s.steps; ++i) {
+    ReachStep st = reach_step(frame, i, M, r, carried, res);
     M = st.metric();
     r = st.r;
     res.steps.push_back(std::move(st));

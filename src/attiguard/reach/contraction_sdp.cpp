@@ -111,6 +111,44 @@ void scale(StateMetric& m, std::vector<double>& mu, double s) {
   for (double& x : mu) x *= s;
 }
 
+/// Margin below 0 that a repaired rate leaves on the LMI's largest eigenvalue.
+constexpr double kLmiMargin = 1e-12;
+
+/// Q, P ≻ 0 and M ≻ 0 in double precision, every entry finite.
+bool positive_definite(const StateMetric& m) {
+  return m.Q.allFinite() && m.P.allFinite() && m.S.allFinite() && lambda_min(m.Q) > 0.0 &&
+         lambda_min(m.P) > 0.0 && min_eig(metric_matrix(m)) > 0.0;
+}
+
+/// M ⪯ M_prev by scaling (M, μ) down (the LMI is homogeneous in them), at most four passes.
+void scale_below_prev(const StateMetric& prev, StateMetric& m, std::vector<double>& mu, MetricSolution& sol) {
+  for (int pass = 0; pass < 4; ++pass) {
+    const double l = relative_metric_eig(m, prev);
+    if (l <= 1.0 && gap_to_prev(m, prev) >= 0.0) break;
+    scale(m, mu, (1.0 - 1e-12 * (1 << (2 * pass))) / std::max(l, 1.0));
+    sol.scaled = true;
+  }
+}
+
+/// The proof in outward-rounded interval arithmetic (lmi_proof.hpp): M ≻ 0, M ≺ M_prev and the
+/// LMI at every vertex, in at most six attempts. A failed monotonicity proof (M = M_prev to
+/// rounding) scales (M, μ) down, a failed LMI proof raises c; both keep what was proved before.
+bool prove_in_intervals(const LmiEnclosure& enc, const StateMetric& prev, StateMetric& m,
+                        std::vector<double>& mu, double& c, MetricSolution& sol) {
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    if (!prove_metric(m, prev)) {
+      scale(m, mu, 1.0 - 1e-12 * std::ldexp(1.0, 2 * attempt));
+      sol.scaled = true;
+      continue;
+    }
+    const NegativeDefiniteProof lmi = prove_contraction_lmi(enc, m, c, mu);
+    if (lmi.proved) return true;
+    const double excess = std::isfinite(lmi.margin) ? std::max(lmi.margin, 0.0) : 0.0;
+    c += (excess + kLmiMargin * std::ldexp(1.0, 2 * attempt)) / (2.0 * metric_min_eig(m));
+  }
+  return false;
+}
+
 /// Certifies (M, μ, c) against the enclosure and the previous metric; see the header.
 MetricSolution certify(const LmiEnclosure& enc, const StateMetric& prev, StateMetric m,
                        std::vector<double> mu, double c, bool rigorous) {
@@ -118,17 +156,11 @@ MetricSolution certify(const LmiEnclosure& enc, const StateMetric& prev, StateMe
   sol.c_requested = c;
   m.Q = 0.5 * (m.Q + m.Q.transpose());
   m.P = 0.5 * (m.P + m.P.transpose());
-  if (!m.Q.allFinite() || !m.P.allFinite() || !m.S.allFinite() || !(lambda_min(m.Q) > 0.0) ||
-      !(lambda_min(m.P) > 0.0) || !(min_eig(metric_matrix(m)) > 0.0)) {
+  if (!positive_definite(m)) {
     sol.message = "metric not positive definite";
     return sol;
   }
-  for (int pass = 0; pass < 4; ++pass) {
-    const double l = relative_metric_eig(m, prev);
-    if (l <= 1.0 && gap_to_prev(m, prev) >= 0.0) break;
-    scale(m, mu, (1.0 - 1e-12 * (1 << (2 * pass))) / std::max(l, 1.0));
-    sol.scaled = true;
-  }
+  scale_below_prev(prev, m, mu, sol);
   if (gap_to_prev(m, prev) < 0.0) {
     sol.message = "cannot keep M <= M_prev";
     return sol;
@@ -139,33 +171,15 @@ MetricSolution certify(const LmiEnclosure& enc, const StateMetric& prev, StateMe
     return sol;
   }
   const double lmin = metric_min_eig(m);
-  constexpr double kMargin = 1e-12;
-  if (worst > -kMargin) {
-    c += (worst + 2.0 * kMargin) / (2.0 * lmin);
+  if (worst > -kLmiMargin) {
+    c += (worst + 2.0 * kLmiMargin) / (2.0 * lmin);
     worst = lmi_worst_eigenvalue(enc, m, c, mu);
   }
   if (!(worst <= 0.0)) {
     sol.message = "LMI re-check failed";
     return sol;
   }
-  // The proof in outward-rounded interval arithmetic (lmi_proof.hpp): M ≻ 0, M ≺ M_prev and the
-  // LMI at every vertex. A failed monotonicity proof (M = M_prev to rounding) scales (M, μ)
-  // down, a failed LMI proof raises c; both keep what was proved before.
-  bool proved = false;
-  for (int attempt = 0; attempt < 6 && !proved && rigorous; ++attempt) {
-    if (!prove_metric(m, prev)) {
-      scale(m, mu, 1.0 - 1e-12 * std::ldexp(1.0, 2 * attempt));
-      sol.scaled = true;
-      continue;
-    }
-    const NegativeDefiniteProof lmi = prove_contraction_lmi(enc, m, c, mu);
-    if (lmi.proved) {
-      proved = true;
-      break;
-    }
-    const double excess = std::isfinite(lmi.margin) ? std::max(lmi.margin, 0.0) : 0.0;
-    c += (excess + kMargin * std::ldexp(1.0, 2 * attempt)) / (2.0 * metric_min_eig(m));
-  }
+  const bool proved = rigorous && prove_in_intervals(enc, prev, m, mu, c, sol);
   if (rigorous && !proved) {
     sol.message = "LMI or metric bounds not proved in interval arithmetic";
     return sol;
@@ -260,88 +274,116 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const M
   return solve_metric(enc, StateMetric{Q_prev, Mat3::Zero(), P_prev}, c, objective, product);
 }
 
-MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
-                            MetricObjective objective, const MetricSdpSettings& settings) {
-  const bool coupled = settings.coupled;
-  const std::vector<Mat6> basis = metric_basis(coupled);
-  const int nm = static_cast<int>(basis.size());
-  const int nv = static_cast<int>(enc.vertices.size());
-  const bool robust = enc.rho > 0.0;
-  const bool enclosure = objective == MetricObjective::max_min_eigenvalue;
-  const int mu0 = nm;
-  const int t_var = mu0 + (robust ? nv : 0);
-  const int nvar = t_var + (enclosure ? 1 : 0);
-  LmiProblem prob(nvar);
+namespace {
 
-  if (!coupled) {
-    // Q_floor I ⪯ Q ⪯ Q_prev, P_floor I ⪯ P ⪯ P_prev (and tI ⪯ Q, tI ⪯ P).
-    for (int part = 0; part < 2; ++part) {
-      const int off = part == 0 ? 0 : 6;
-      const double floor = part == 0 ? settings.q_floor : settings.p_floor;
-      const Mat3& pm = part == 0 ? prev.Q : prev.P;
-      const int lo = prob.add_block(3);
-      const int hi = prob.add_block(3);
-      prob.add_constant(lo, -floor * Eigen::MatrixXd::Identity(3, 3));
-      prob.add_constant(hi, pm);
-      for (int k = 0; k < 6; ++k) {
-        prob.add_term(lo, off + k, sym_basis(k));
-        prob.add_term(hi, off + k, -sym_basis(k));
-      }
-      if (enclosure) {
-        const int tb = prob.add_block(3);
-        for (int k = 0; k < 6; ++k) prob.add_term(tb, off + k, sym_basis(k));
-        prob.add_term(tb, t_var, -Eigen::MatrixXd::Identity(3, 3));
-      }
+/// The variables of the SDP (20): the metric's entries (metric_basis), then one multiplier μ_v
+/// per vertex when the enclosure is robust (ρ > 0), then t for the max_min_eigenvalue objective.
+struct SdpLayout {
+  std::vector<Mat6> basis;
+  int nm{0};         ///< metric variables
+  int nv{0};         ///< vertices of the enclosure
+  bool robust{false};
+  bool enclosure{false};  ///< MetricObjective::max_min_eigenvalue
+  int mu0{0};        ///< index of μ_0
+  int t_var{0};      ///< index of t
+  int nvar{0};
+};
+
+SdpLayout sdp_layout(const LmiEnclosure& enc, MetricObjective objective, bool coupled) {
+  SdpLayout l;
+  l.basis = metric_basis(coupled);
+  l.nm = static_cast<int>(l.basis.size());
+  l.nv = static_cast<int>(enc.vertices.size());
+  l.robust = enc.rho > 0.0;
+  l.enclosure = objective == MetricObjective::max_min_eigenvalue;
+  l.mu0 = l.nm;
+  l.t_var = l.mu0 + (l.robust ? l.nv : 0);
+  l.nvar = l.t_var + (l.enclosure ? 1 : 0);
+  return l;
+}
+
+/// Product metric: Q_floor I ⪯ Q ⪯ Q_prev, P_floor I ⪯ P ⪯ P_prev (and tI ⪯ Q, tI ⪯ P).
+void add_product_bounds(LmiProblem& prob, const StateMetric& prev, const MetricSdpSettings& settings,
+                        const SdpLayout& l) {
+  for (int part = 0; part < 2; ++part) {
+    const int off = part == 0 ? 0 : 6;
+    const double floor = part == 0 ? settings.q_floor : settings.p_floor;
+    const Mat3& pm = part == 0 ? prev.Q : prev.P;
+    const int lo = prob.add_block(3);
+    const int hi = prob.add_block(3);
+    prob.add_constant(lo, -floor * Eigen::MatrixXd::Identity(3, 3));
+    prob.add_constant(hi, pm);
+    for (int k = 0; k < 6; ++k) {
+      prob.add_term(lo, off + k, sym_basis(k));
+      prob.add_term(hi, off + k, -sym_basis(k));
     }
-  } else {
-    // diag(Q_floor I, P_floor I) ⪯ M ⪯ M_prev; tI ⪯ Q − SP⁻¹Sᵀ ⟺ M − diag(tI, 0) ⪰ 0, and
-    // tI ⪯ P − SᵀQ⁻¹S ⟺ M − diag(0, tI) ⪰ 0 (Schur complements, P ≻ 0 and Q ≻ 0).
-    Mat6 floor = Mat6::Zero();
-    floor.topLeftCorner<3, 3>() = settings.q_floor * Mat3::Identity();
-    floor.bottomRightCorner<3, 3>() = settings.p_floor * Mat3::Identity();
-    const int lo = prob.add_block(6);
-    const int hi = prob.add_block(6);
-    prob.add_constant(lo, -floor);
-    prob.add_constant(hi, metric_matrix(prev));
-    for (int k = 0; k < nm; ++k) {
-      prob.add_term(lo, k, basis[static_cast<std::size_t>(k)]);
-      prob.add_term(hi, k, -basis[static_cast<std::size_t>(k)]);
-    }
-    if (enclosure) {
-      for (int part = 0; part < 2; ++part) {
-        const int tb = prob.add_block(6);
-        for (int k = 0; k < nm; ++k) prob.add_term(tb, k, basis[static_cast<std::size_t>(k)]);
-        Eigen::MatrixXd T = Eigen::MatrixXd::Zero(6, 6);
-        T.block(3 * part, 3 * part, 3, 3) = -Eigen::MatrixXd::Identity(3, 3);
-        prob.add_term(tb, t_var, T);
-      }
+    if (l.enclosure) {
+      const int tb = prob.add_block(3);
+      for (int k = 0; k < 6; ++k) prob.add_term(tb, off + k, sym_basis(k));
+      prob.add_term(tb, l.t_var, -Eigen::MatrixXd::Identity(3, 3));
     }
   }
-  // The contraction LMI at every vertex.
-  const int n = robust ? 9 : 6;
-  for (int v = 0; v < nv; ++v) {
+}
+
+/// Coupled metric: diag(Q_floor I, P_floor I) ⪯ M ⪯ M_prev; tI ⪯ Q − SP⁻¹Sᵀ ⟺ M − diag(tI, 0) ⪰ 0,
+/// and tI ⪯ P − SᵀQ⁻¹S ⟺ M − diag(0, tI) ⪰ 0 (Schur complements, P ≻ 0 and Q ≻ 0).
+void add_coupled_bounds(LmiProblem& prob, const StateMetric& prev, const MetricSdpSettings& settings,
+                        const SdpLayout& l) {
+  Mat6 floor = Mat6::Zero();
+  floor.topLeftCorner<3, 3>() = settings.q_floor * Mat3::Identity();
+  floor.bottomRightCorner<3, 3>() = settings.p_floor * Mat3::Identity();
+  const int lo = prob.add_block(6);
+  const int hi = prob.add_block(6);
+  prob.add_constant(lo, -floor);
+  prob.add_constant(hi, metric_matrix(prev));
+  for (int k = 0; k < l.nm; ++k) {
+    prob.add_term(lo, k, l.basis[static_cast<std::size_t>(k)]);
+    prob.add_term(hi, k, -l.basis[static_cast<std::size_t>(k)]);
+  }
+  if (l.enclosure) {
+    for (int part = 0; part < 2; ++part) {
+      const int tb = prob.add_block(6);
+      for (int k = 0; k < l.nm; ++k) prob.add_term(tb, k, l.basis[static_cast<std::size_t>(k)]);
+      Eigen::MatrixXd T = Eigen::MatrixXd::Zero(6, 6);
+      T.block(3 * part, 3 * part, 3, 3) = -Eigen::MatrixXd::Identity(3, 3);
+      prob.add_term(tb, l.t_var, T);
+    }
+  }
+}
+
+/// The contraction LMI at every vertex, ⪯ −strictness·I; robustly (the 9×9 Schur form of
+/// contraction_sdp.hpp, multiplier μ_v) when ρ > 0.
+void add_contraction_lmis(LmiProblem& prob, const LmiEnclosure& enc, double c,
+                          const MetricSdpSettings& settings, const SdpLayout& l) {
+  const int n = l.robust ? 9 : 6;
+  for (int v = 0; v < l.nv; ++v) {
     const LmiVertex& vx = enc.vertices[static_cast<std::size_t>(v)];
     const int b = prob.add_block(n);
     prob.add_constant(b, -settings.strictness * Eigen::MatrixXd::Identity(n, n));
-    for (int k = 0; k < nm; ++k) {
-      const Mat6& E = basis[static_cast<std::size_t>(k)];
+    for (int k = 0; k < l.nm; ++k) {
+      const Mat6& E = l.basis[static_cast<std::size_t>(k)];
       Eigen::MatrixXd Fk = Eigen::MatrixXd::Zero(n, n);
       Fk.topLeftCorner(6, 6) = -contraction_lmi(E, vx.A, vx.B, vx.omega, c);
-      if (robust) {
+      if (l.robust) {
         Fk.block(0, 6, 6, 3) = -E.rightCols<3>();
         Fk.block(6, 0, 3, 6) = -E.rightCols<3>().transpose();
       }
       prob.add_term(b, k, Fk);
     }
-    if (robust) {
+    if (l.robust) {
       Eigen::MatrixXd Fm = Eigen::MatrixXd::Zero(n, n);
       Fm.topLeftCorner(6, 6) = -enc.rho * enc.rho * Eigen::MatrixXd::Identity(6, 6);
       Fm.bottomRightCorner(3, 3) = Eigen::MatrixXd::Identity(3, 3);
-      prob.add_term(b, mu0 + v, Fm);
+      prob.add_term(b, l.mu0 + v, Fm);
     }
   }
-  if (enclosure) {
-    prob.set_objective(t_var, -1.0);
+}
+
+/// max_min_eigenvalue: minimise −t − 10⁻³(tr Q + tr P); max_trace_q: minimise −tr(Q) (the
+/// paper's (20)).
+void set_sdp_objective(LmiProblem& prob, const SdpLayout& l) {
+  if (l.enclosure) {
+    prob.set_objective(l.t_var, -1.0);
     for (int k = 0; k < 3; ++k) {
       prob.set_objective(k, -1e-3);
       prob.set_objective(6 + k, -1e-3);
@@ -349,6 +391,21 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, do
   } else {
     for (int k = 0; k < 3; ++k) prob.set_objective(k, -1.0);
   }
+}
+
+}  // namespace
+
+MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                            MetricObjective objective, const MetricSdpSettings& settings) {
+  const SdpLayout l = sdp_layout(enc, objective, settings.coupled);
+  LmiProblem prob(l.nvar);
+  if (!settings.coupled) {
+    add_product_bounds(prob, prev, settings, l);
+  } else {
+    add_coupled_bounds(prob, prev, settings, l);
+  }
+  add_contraction_lmis(prob, enc, c, settings, l);
+  set_sdp_objective(prob, l);
 
   const SdpResult res = solve_sdp(prob, settings.sdp, 1e-7);
   if (res.status != SdpStatus::solved) {
@@ -359,10 +416,10 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, do
     return sol;
   }
   std::vector<double> mu;
-  if (robust) {
-    for (int v = 0; v < nv; ++v) mu.push_back(res.y(mu0 + v));
+  if (l.robust) {
+    for (int v = 0; v < l.nv; ++v) mu.push_back(res.y(l.mu0 + v));
   }
-  MetricSolution sol = certify(enc, prev, metric_from(res.y, basis), mu, c, settings.rigorous);
+  MetricSolution sol = certify(enc, prev, metric_from(res.y, l.basis), mu, c, settings.rigorous);
   sol.status = sol.ok ? SdpStatus::solved : SdpStatus::failed;
   if (sol.ok) sol.message = res.message;
   return sol;

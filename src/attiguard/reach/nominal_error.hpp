@@ -13,14 +13,15 @@
 #include <optional>
 #include <string>
 
+#include "attiguard/reach/deviation.hpp"
 #include "attiguard/reach/interval.hpp"
 #include "attiguard/reach/polynomial_field.hpp"
 
 namespace attiguard::reach {
 
-/// ε = (ε_1, ε_2, ε_3, ε_ω, ε_R), laid out like the tube's deviation vector z (tube.hpp).
+/// ε = (ε_1, ε_2, ε_3, ε_ω, ε_R), laid out like the tube's deviation z (deviation.hpp).
 struct NominalStepError {
-  Eigen::Matrix<double, 5, 1> bound{Eigen::Matrix<double, 5, 1>::Zero()};
+  Deviation bound;         ///< ε_k in d_omega_b, ε_ω in e_omega_b, ε_R in e_R
   int order{0};            ///< Taylor order p used
   double remainder{0.0};   ///< largest Lagrange remainder bound (entries of R and ω)
 };

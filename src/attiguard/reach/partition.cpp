@@ -30,6 +30,76 @@ std::vector<Vec3> grid(double a, int n, double& cell_radius) {
   }
   return pts;
 }
+
+/// This rank's cells (indices `share`) on `threads`. A failing cell must not skip the collective
+/// that follows (the other ranks would wait for ever), so failures are recorded per cell —
+/// "" or "<exit code> <message>" — and raised after the exchange.
+void run_share(const ClosedLoop& loop, const std::vector<InitialSet>& cells, const std::vector<long>& share,
+               const ConReachSettings& settings, int threads, std::vector<ReachResult>& mine,
+               std::vector<std::string>& failure) {
+  mine.resize(share.size());
+  failure.resize(share.size());
+  parallel::parallel_for(static_cast<long>(share.size()), threads, [&](long p) {
+    const auto q = static_cast<std::size_t>(p);
+    try {
+      mine[q] = run_conreach(loop, cells[static_cast<std::size_t>(share[q])], settings);
+    } catch (const Error& e) {
+      failure[q] = std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
+    } catch (const std::exception& e) {
+      failure[q] = std::to_string(static_cast<int>(ExitCode::numerical_failure)) + ' ' + e.what();
+    }
+  });
+}
+
+/// This rank's cells for the exchange: per cell, its index, its failure and its CBOR-encoded
+/// result, length-prefixed.
+std::string pack_share(const std::vector<long>& share, const std::vector<ReachResult>& mine,
+                       const std::vector<std::string>& failure) {
+  std::string packed;
+  auto put = [&packed](const std::string& field) {
+    packed += std::to_string(field.size()) + ':' + field;
+  };
+  for (std::size_t q = 0; q < share.size(); ++q) {
+    put(std::to_string(share[q]));
+    put(failure[q]);
+    put(failure[q].empty() ? encode_result(mine[q]) : std::string());
+  }
+  return packed;
+}
+
+/// One rank's packed cells (pack_share) into `out` and `failures`, by cell index.
+void unpack_share(const std::string& part, std::vector<ReachResult>& out, std::vector<std::string>& failures) {
+  std::size_t pos = 0;
+  auto take = [&part, &pos]() {
+    const std::size_t colon = part.find(':', pos);
+    if (colon == std::string::npos) throw NumericalError("reach: malformed cell exchange between ranks");
+    const std::size_t n = std::stoul(part.substr(pos, colon - pos));
+    std::string field = part.substr(colon + 1, n);
+    pos = colon + 1 + n;
+    return field;
+  };
+  while (pos < part.size()) {
+    const auto cell = static_cast<std::size_t>(std::stol(take()));
+    failures.at(cell) = take();
+    const std::string bytes = take();
+    if (failures[cell].empty()) out[cell] = decode_result(bytes);
+  }
+}
+
+/// The failure of the lowest cell index, whatever the split (same message serial and MPI),
+/// rethrown as the error of its exit code.
+void raise_first_failure(const std::vector<std::string>& failures) {
+  for (const std::string& f : failures) {
+    if (f.empty()) continue;
+    const std::size_t space = f.find(' ');
+    const int code = std::stoi(f.substr(0, space));
+    const std::string message = f.substr(space + 1);
+    if (code == static_cast<int>(ExitCode::invalid_input)) throw InputError(message);
+    if (code == static_cast<int>(ExitCode::verification_failed)) throw VerificationFailure(message);
+    throw NumericalError(message);
+  }
+}
+
 }  // namespace
 
 std::vector<InitialSet> partition_initial_set(const InitialSet& whole, int n_att, int n_omega) {
@@ -61,21 +131,9 @@ std::vector<ReachResult> run_partitioned(const ClosedLoop& loop, const std::vect
   std::vector<long> indices(cells.size());
   std::iota(indices.begin(), indices.end(), 0L);
   const std::vector<long> share = parallel::rank_share(indices, world);
-
-  // This rank's cells. A failing cell must not skip the collective below (the other ranks
-  // would wait for ever), so failures are recorded per cell and raised after the exchange.
-  std::vector<ReachResult> mine(share.size());
-  std::vector<std::string> failure(share.size());  // "" or "<exit code> <message>"
-  parallel::parallel_for(static_cast<long>(share.size()), threads, [&](long p) {
-    const auto q = static_cast<std::size_t>(p);
-    try {
-      mine[q] = run_conreach(loop, cells[static_cast<std::size_t>(share[q])], settings);
-    } catch (const Error& e) {
-      failure[q] = std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
-    } catch (const std::exception& e) {
-      failure[q] = std::to_string(static_cast<int>(ExitCode::numerical_failure)) + ' ' + e.what();
-    }
-  });
+  std::vector<ReachResult> mine;
+  std::vector<std::string> failure;
+  run_share(loop, cells, share, settings, threads, mine, failure);
 
   std::vector<ReachResult> out(cells.size());
   std::vector<std::string> failures(cells.size());
@@ -85,45 +143,12 @@ std::vector<ReachResult> run_partitioned(const ClosedLoop& loop, const std::vect
       failures[static_cast<std::size_t>(share[q])] = std::move(failure[q]);
     }
   } else {
-    // Every rank receives every cell (so all ranks reach the same verdict and exit code):
-    // per cell, its index, its failure and its CBOR-encoded result, length-prefixed.
-    std::string packed;
-    auto put = [&packed](const std::string& field) {
-      packed += std::to_string(field.size()) + ':' + field;
-    };
-    for (std::size_t q = 0; q < share.size(); ++q) {
-      put(std::to_string(share[q]));
-      put(failure[q]);
-      put(failure[q].empty() ? encode_result(mine[q]) : std::string());
-    }
-    for (const std::string& part : parallel::allgather_bytes(packed, world)) {
-      std::size_t pos = 0;
-      auto take = [&part, &pos]() {
-        const std::size_t colon = part.find(':', pos);
-        if (colon == std::string::npos) throw NumericalError("reach: malformed cell exchange between ranks");
-        const std::size_t n = std::stoul(part.substr(pos, colon - pos));
-        std::string field = part.substr(colon + 1, n);
-        pos = colon + 1 + n;
-        return field;
-      };
-      while (pos < part.size()) {
-        const auto cell = static_cast<std::size_t>(std::stol(take()));
-        failures.at(cell) = take();
-        const std::string bytes = take();
-        if (failures[cell].empty()) out[cell] = decode_result(bytes);
-      }
+    // Every rank receives every cell (so all ranks reach the same verdict and exit code).
+    for (const std::string& part : parallel::allgather_bytes(pack_share(share, mine, failure), world)) {
+      unpack_share(part, out, failures);
     }
   }
-  // The failure of the lowest cell index, whatever the split (same message serial and MPI).
-  for (const std::string& f : failures) {
-    if (f.empty()) continue;
-    const std::size_t space = f.find(' ');
-    const int code = std::stoi(f.substr(0, space));
-    const std::string message = f.substr(space + 1);
-    if (code == static_cast<int>(ExitCode::invalid_input)) throw InputError(message);
-    if (code == static_cast<int>(ExitCode::verification_failed)) throw VerificationFailure(message);
-    throw NumericalError(message);
-  }
+  raise_first_failure(failures);
   return out;
 }
 

@@ -39,18 +39,56 @@ void ball(const json& j, AttitudeBall& b) {
   b.radius = j.at(1).get<double>();
 }
 
+/// A JSON array of the records, each encoded by `encode`.
+template <class T, class Encode>
+json array_of(const std::vector<T>& records, const Encode& encode) {
+  json a = json::array();
+  for (const T& r : records) a.push_back(encode(r));
+  return a;
+}
+
+/// The records of a JSON array, each decoded by `decode`.
+template <class T, class Decode>
+std::vector<T> records_of(const json& a, const Decode& decode) {
+  std::vector<T> out;
+  for (const json& r : a) out.push_back(decode(r));
+  return out;
+}
+
+json segment_json(const TubeSegment& g) { return {g.t0, g.t1, ball(g.attitude), box(g.omega)}; }
+TubeSegment segment_from(const json& g) {
+  TubeSegment seg;
+  seg.t0 = g.at(0).get<double>();
+  seg.t1 = g.at(1).get<double>();
+  ball(g.at(2), seg.attitude);
+  box(g.at(3), seg.omega);
+  return seg;
+}
+
+json trial_json(const RateTrial& t) { return {t.c, t.feasible, t.enclosure_radius}; }
+RateTrial trial_from(const json& t) {
+  return {t.at(0).get<double>(), t.at(1).get<bool>(), t.at(2).get<double>()};
+}
+
+json nominal_json(const NominalPoint& p) { return {p.t, dense(p.R), dense(p.omega)}; }
+NominalPoint nominal_from(const json& p) {
+  NominalPoint n;
+  n.t = p.at(0).get<double>();
+  dense(p.at(1), n.R);
+  dense(p.at(2), n.omega);
+  return n;
+}
+
 json step_json(const ReachStep& s) {
-  json tube = json::array();
-  for (const TubeSegment& g : s.state_tube) tube.push_back({g.t0, g.t1, ball(g.attitude), box(g.omega)});
-  json trials = json::array();
-  for (const RateTrial& t : s.trials) trials.push_back({t.c, t.feasible, t.enclosure_radius});
   return {{"i", s.index}, {"t0", s.t0}, {"t1", s.t1}, {"wbox", box(s.omega_box)},
-          {"abox", ball(s.attitude_box)}, {"tube", tube}, {"c_id", s.c_identity}, {"c", s.c},
+          {"abox", ball(s.attitude_box)}, {"tube", array_of(s.state_tube, segment_json)},
+          {"c_id", s.c_identity}, {"c", s.c},
           {"Q", dense(s.Q)}, {"S", dense(s.S)}, {"P", dense(s.P)}, {"r", s.r}, {"R", dense(s.R)}, {"w", dense(s.omega)},
           {"ar", s.attitude_radius}, {"whw", dense(s.omega_half_widths)},
           {"na", s.numerical_allowance}, {"neR", s.nominal_error_R}, {"new", s.nominal_error_omega},
           {"exact", s.lmi_exact}, {"rho", s.lmi_rho},
-          {"fb", s.fallback}, {"pr", s.proved_rigorously}, {"solves", s.sdp_solves}, {"trials", trials}};
+          {"fb", s.fallback}, {"pr", s.proved_rigorously}, {"solves", s.sdp_solves},
+          {"trials", array_of(s.trials, trial_json)}};
 }
 
 ReachStep step_from(const json& j) {
@@ -60,14 +98,7 @@ ReachStep step_from(const json& j) {
   s.t1 = j.at("t1").get<double>();
   box(j.at("wbox"), s.omega_box);
   ball(j.at("abox"), s.attitude_box);
-  for (const json& g : j.at("tube")) {
-    TubeSegment seg;
-    seg.t0 = g.at(0).get<double>();
-    seg.t1 = g.at(1).get<double>();
-    ball(g.at(2), seg.attitude);
-    box(g.at(3), seg.omega);
-    s.state_tube.push_back(seg);
-  }
+  s.state_tube = records_of<TubeSegment>(j.at("tube"), segment_from);
   s.c_identity = j.at("c_id").get<double>();
   s.c = j.at("c").get<double>();
   dense(j.at("Q"), s.Q);
@@ -86,23 +117,18 @@ ReachStep step_from(const json& j) {
   s.proved_rigorously = j.at("pr").get<bool>();
   s.fallback = j.at("fb").get<bool>();
   s.sdp_solves = j.at("solves").get<int>();
-  for (const json& t : j.at("trials")) {
-    s.trials.push_back({t.at(0).get<double>(), t.at(1).get<bool>(), t.at(2).get<double>()});
-  }
+  s.trials = records_of<RateTrial>(j.at("trials"), trial_from);
   return s;
 }
 
 }  // namespace
 
 std::string encode_result(const ReachResult& r) {
-  json steps = json::array();
-  for (const ReachStep& s : r.steps) steps.push_back(step_json(s));
-  json nominal = json::array();
-  for (const NominalPoint& p : r.nominal) nominal.push_back({p.t, dense(p.R), dense(p.omega)});
   const InitialSet& in = r.initial;
   const json j = {{"init", {dense(in.R0), in.attitude_radius, dense(in.omega0), in.omega_radius, dense(in.P0)}},
-                  {"Q0", dense(r.Q0)}, {"S0", dense(r.S0)}, {"P0", dense(r.P0)}, {"r0", r.r0}, {"steps", steps},
-                  {"nominal", nominal}, {"solves", r.sdp_solves}, {"wall", r.wall_time_s}};
+                  {"Q0", dense(r.Q0)}, {"S0", dense(r.S0)}, {"P0", dense(r.P0)}, {"r0", r.r0},
+                  {"steps", array_of(r.steps, step_json)}, {"nominal", array_of(r.nominal, nominal_json)},
+                  {"solves", r.sdp_solves}, {"wall", r.wall_time_s}};
   const std::vector<std::uint8_t> bytes = json::to_cbor(j);
   return {bytes.begin(), bytes.end()};
 }
@@ -121,14 +147,8 @@ ReachResult decode_result(const std::string& bytes) {
     dense(j.at("P0"), r.P0);
     dense(j.at("S0"), r.S0);
     r.r0 = j.at("r0").get<double>();
-    for (const json& s : j.at("steps")) r.steps.push_back(step_from(s));
-    for (const json& p : j.at("nominal")) {
-      NominalPoint n;
-      n.t = p.at(0).get<double>();
-      dense(p.at(1), n.R);
-      dense(p.at(2), n.omega);
-      r.nominal.push_back(n);
-    }
+    r.steps = records_of<ReachStep>(j.at("steps"), step_from);
+    r.nominal = records_of<NominalPoint>(j.at("nominal"), nominal_from);
     r.sdp_solves = j.at("solves").get<int>();
     r.wall_time_s = j.at("wall").get<double>();
     return r;

@@ -223,16 +223,10 @@ void validate(const LmiProblem& problem) {
   }
 }
 
-}  // namespace
-
-SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, double recheck_tol) {
-  validate(problem);
-  ++g_solve_count;
-  SdpResult result;
-
-  const int m = problem.num_variables();
+/// C = −F0 block by block (CSDP's C of the dual form, sdp_solver.hpp); returns n, the sum of
+/// the block sizes. A 1×1 block is CSDP's DIAG category, a larger one a dense MATRIX.
+int fill_constant_blocks(const LmiProblem& problem, CsdpData& data) {
   const int K = static_cast<int>(problem.blocks().size());
-  CsdpData data;
   int n = 0;
   data.C.nblocks = K;
   data.C.blocks = CsdpData::alloc<blockrec>(static_cast<std::size_t>(K) + 1);
@@ -256,10 +250,73 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
       }
     }
   }
+  return n;
+}
+
+/// a = b (1-based, CSDP's convention).
+void fill_objective(const LmiProblem& problem, CsdpData& data) {
+  const int m = problem.num_variables();
   data.a = CsdpData::alloc<double>(static_cast<std::size_t>(m) + 1);
   for (int i = 1; i <= m; ++i) {
     data.a[i] = problem.objective()(i - 1);
   }
+}
+
+/// F_var of the block (the last term naming it), nullptr when the block has none.
+const Eigen::MatrixXd* term_of(const LmiBlock& blk, int var) {
+  const Eigen::MatrixXd* F = nullptr;
+  for (const auto& [v, M] : blk.terms) {
+    if (v == var) {
+      F = &M;
+    }
+  }
+  return F;
+}
+
+/// Number of non-zero entries of the upper triangle of the s×s matrix F.
+int upper_nonzeros(const Eigen::MatrixXd& F, int s) {
+  int nnz = 0;
+  for (int r = 0; r < s; ++r) {
+    for (int c = r; c < s; ++c) {
+      nnz += F(r, c) != 0.0 ? 1 : 0;
+    }
+  }
+  return nnz;
+}
+
+/// Pushes block k of constraint i — the nnz non-zero upper-triangle entries of F, symmetrised —
+/// onto the front of the constraint's block list (linked first, so that release() frees it).
+void push_sparse_block(CsdpData& data, int i, int k, int s, int nnz, const Eigen::MatrixXd& F) {
+  auto* sb = CsdpData::alloc<sparseblock>(1);
+  sb->next = data.constraints[i].blocks;
+  data.constraints[i].blocks = sb;
+  sb->nextbyblock = nullptr;
+  sb->blocknum = k;
+  sb->blocksize = s;
+  sb->constraintnum = i;
+  sb->issparse = 1;
+  sb->numentries = nnz;
+  sb->entries = CsdpData::alloc<double>(static_cast<std::size_t>(nnz) + 1);
+  sb->iindices = CsdpData::alloc<int>(static_cast<std::size_t>(nnz) + 1);
+  sb->jindices = CsdpData::alloc<int>(static_cast<std::size_t>(nnz) + 1);
+  int e = 1;
+  for (int r = 0; r < s; ++r) {
+    for (int c = r; c < s; ++c) {
+      const double v = 0.5 * (F(r, c) + F(c, r));
+      if (F(r, c) != 0.0) {
+        sb->entries[e] = v;
+        sb->iindices[e] = r + 1;
+        sb->jindices[e] = c + 1;
+        ++e;
+      }
+    }
+  }
+}
+
+/// A_i = F_i for every variable i, as CSDP's sparse constraint matrices.
+void fill_constraints(const LmiProblem& problem, CsdpData& data) {
+  const int m = problem.num_variables();
+  const int K = static_cast<int>(problem.blocks().size());
   data.constraints = CsdpData::alloc<constraintmatrix>(static_cast<std::size_t>(m) + 1);
   data.num_constraints = m;
   for (int i = 1; i <= m; ++i) {
@@ -267,86 +324,58 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
     // Push blocks in decreasing order so that the list ends up in increasing block order.
     for (int k = K; k >= 1; --k) {
       const LmiBlock& blk = problem.blocks()[static_cast<std::size_t>(k - 1)];
-      const Eigen::MatrixXd* F = nullptr;
-      for (const auto& [v, M] : blk.terms) {
-        if (v == i - 1) {
-          F = &M;
-        }
-      }
+      const Eigen::MatrixXd* F = term_of(blk, i - 1);
       if (F == nullptr) {
         continue;
       }
-      const int s = blk.size;
-      int nnz = 0;
-      for (int r = 0; r < s; ++r) {
-        for (int c = r; c < s; ++c) {
-          nnz += (*F)(r, c) != 0.0 ? 1 : 0;
-        }
-      }
+      const int nnz = upper_nonzeros(*F, blk.size);
       if (nnz == 0) {
         continue;
       }
-      auto* sb = CsdpData::alloc<sparseblock>(1);
-      sb->next = data.constraints[i].blocks;
-      data.constraints[i].blocks = sb;
-      sb->nextbyblock = nullptr;
-      sb->blocknum = k;
-      sb->blocksize = s;
-      sb->constraintnum = i;
-      sb->issparse = 1;
-      sb->numentries = nnz;
-      sb->entries = CsdpData::alloc<double>(static_cast<std::size_t>(nnz) + 1);
-      sb->iindices = CsdpData::alloc<int>(static_cast<std::size_t>(nnz) + 1);
-      sb->jindices = CsdpData::alloc<int>(static_cast<std::size_t>(nnz) + 1);
-      int e = 1;
-      for (int r = 0; r < s; ++r) {
-        for (int c = r; c < s; ++c) {
-          const double v = 0.5 * ((*F)(r, c) + (*F)(c, r));
-          if ((*F)(r, c) != 0.0) {
-            sb->entries[e] = v;
-            sb->iindices[e] = r + 1;
-            sb->jindices[e] = c + 1;
-            ++e;
-          }
-        }
-      }
+      push_sparse_block(data, i, k, blk.size, nnz, *F);
     }
   }
+}
 
+/// The parameters initparams() hands to CSDP (caller holds solver_mutex()).
+void set_parameters(const SdpSettings& settings) {
+  g_params.axtol = settings.axtol;
+  g_params.atytol = settings.atytol;
+  g_params.objtol = settings.objtol;
+  g_params.pinftol = settings.pinftol;
+  g_params.dinftol = settings.dinftol;
+  g_params.maxiter = settings.maxiter;
+  g_params.minstepfrac = 0.90;
+  g_params.maxstepfrac = 0.97;
+  g_params.minstepp = 1e-8;
+  g_params.minstepd = 1e-8;
+  g_params.usexzgap = 1;
+  g_params.tweakgap = 0;
+  g_params.affine = 0;
+  g_params.perturbobj = 1.0;
+  g_params.fastmode = 0;
+}
+
+/// easy_sdp under the process-wide lock, its return value into `code`; false when CSDP did not
+/// call our initparams().
+bool run_csdp(int n, int m, CsdpData& data, const SdpSettings& settings, int& code) {
   double pobj = 0.0;
   double dobj = 0.0;
-  int code = -1;
-  {
-    std::lock_guard<std::mutex> lock(solver_mutex());
-    g_params.axtol = settings.axtol;
-    g_params.atytol = settings.atytol;
-    g_params.objtol = settings.objtol;
-    g_params.pinftol = settings.pinftol;
-    g_params.dinftol = settings.dinftol;
-    g_params.maxiter = settings.maxiter;
-    g_params.minstepfrac = 0.90;
-    g_params.maxstepfrac = 0.97;
-    g_params.minstepp = 1e-8;
-    g_params.minstepd = 1e-8;
-    g_params.usexzgap = 1;
-    g_params.tweakgap = 0;
-    g_params.affine = 0;
-    g_params.perturbobj = 1.0;
-    g_params.fastmode = 0;
-    g_initparams_called = false;
-    initsoln(n, m, data.C, data.a, data.constraints, &data.X, &data.y, &data.Z);
-    data.have_solution = true;
-    code = easy_sdp(n, m, data.C, data.a, data.constraints, 0.0, &data.X, &data.y, &data.Z,
-                    &pobj, &dobj);
-    if (!g_initparams_called) {
-      result.csdp_code = code;
-      result.message =
-          "CSDP did not use attiguard's parameters (initparams override not linked)";
-      return result;
-    }
-  }
-  result.csdp_code = code;
+  std::lock_guard<std::mutex> lock(solver_mutex());
+  set_parameters(settings);
+  g_initparams_called = false;
+  initsoln(n, m, data.C, data.a, data.constraints, &data.X, &data.y, &data.Z);
+  data.have_solution = true;
+  code = easy_sdp(n, m, data.C, data.a, data.constraints, 0.0, &data.X, &data.y, &data.Z,
+                  &pobj, &dobj);
+  return g_initparams_called;
+}
 
+/// The result of CSDP's code and y: infeasible (code 2), failed (other codes, a non-finite y,
+/// or a y whose blocks fail the eigenvalue re-check), or solved.
+void read_solution(const LmiProblem& problem, const CsdpData& data, int code, double recheck_tol,
+               SdpResult& result) {
+  const int m = problem.num_variables();
   Eigen::VectorXd y(m);
   for (int i = 1; i <= m; ++i) {
     y(i - 1) = data.y[i];
@@ -356,16 +385,16 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
     result.status = SdpStatus::infeasible;
     os << "CSDP: the LMIs are infeasible (code 2)";
     result.message = os.str();
-    return result;
+    return;
   }
   if (code != 0 && code != 3) {
     os << "CSDP failed (code " << code << ")";
     result.message = os.str();
-    return result;
+    return;
   }
   if (!y.allFinite()) {
     result.message = "CSDP returned a non-finite solution";
-    return result;
+    return;
   }
   result.min_eigenvalue = problem.min_eigenvalue(y);
   result.objective = problem.objective().dot(y);
@@ -373,12 +402,32 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
     os << "CSDP solution fails the eigenvalue re-check (min eigenvalue " << result.min_eigenvalue
        << ", code " << code << ")";
     result.message = os.str();
-    return result;
+    return;
   }
   result.status = SdpStatus::solved;
   result.y = y;
   os << "solved (code " << code << ", objective " << result.objective << ")";
   result.message = os.str();
+}
+
+}  // namespace
+
+SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, double recheck_tol) {
+  validate(problem);
+  ++g_solve_count;
+  SdpResult result;
+  CsdpData data;
+  const int n = fill_constant_blocks(problem, data);
+  fill_objective(problem, data);
+  fill_constraints(problem, data);
+  int code = -1;
+  if (!run_csdp(n, problem.num_variables(), data, settings, code)) {
+    result.csdp_code = code;
+    result.message = "CSDP did not use attiguard's parameters (initparams override not linked)";
+    return result;
+  }
+  result.csdp_code = code;
+  read_solution(problem, data, code, recheck_tol, result);
   return result;
 }
 

@@ -34,6 +34,101 @@ Vec3 sample_ball(std::mt19937_64& g, double radius, bool on_boundary) {
   const double s = on_boundary ? 1.0 : std::cbrt(u(g));
   return v.normalized() * radius * s;
 }
+
+/// The cell whose initial set contains (R, ω); NumericalError when none does.
+std::size_t containing_cell(const std::vector<InitialSet>& cells, const Mat3& R, const Vec3& w) {
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (lie::distance(cells[c].R0, R) <= cells[c].attitude_radius * (1 + 1e-12) + 1e-15 &&
+        (w - cells[c].omega0).norm() <= cells[c].omega_radius * (1 + 1e-12) + 1e-15) {
+      return c;
+    }
+  }
+  throw NumericalError("soundness check: sample outside every cell");
+}
+
+/// What one sampled trajectory showed.
+struct SampleOutcome {
+  double worst{0.0};            ///< largest ball ratio at the t_i
+  double violation{-1.0};       ///< first t_i outside the ball (−1: none)
+  double worst_excess{0.0};     ///< largest excess over a tube segment or U_i
+  double tube_violation{-1.0};  ///< first sub-step time outside them (−1: none)
+  SampleTrajectory traj;        ///< filled when the sample is kept
+};
+
+/// The sample at sub-step time k against tube segments j = k − 1 (ending at t_k) and j = k
+/// (starting there), and their U_i.
+void check_tube_at(const ReachResult& res, std::size_t m, std::size_t k, double t, const Mat3& Rk,
+                   const Vec3& wk, SampleOutcome& out) {
+  for (const std::size_t j : {k - 1, k}) {
+    if (j >= res.steps.size() * m) continue;  // k − 1 wraps for k = 0
+    const ReachStep& st = res.steps[j / m];
+    const double ex = std::max(excess(st.state_tube[j % m].attitude, st.state_tube[j % m].omega, Rk, wk),
+                               excess(st.attitude_box, st.omega_box, Rk, wk));
+    if (!(ex <= 0.0) && out.tube_violation < 0.0) out.tube_violation = t;
+    out.worst_excess = std::max(out.worst_excess, std::isfinite(ex) ? ex : 1e300);
+  }
+}
+
+/// The sample at t_i against the ball of step i (the initial ball for i = 0).
+void check_ball_at(const ReachResult& res, std::size_t i, double t, const Mat3& Rk, const Vec3& wk,
+                   SampleOutcome& out) {
+  double ratio;
+  if (i == 0) {
+    ratio = metric_distance_upper({res.Q0, res.S0, res.P0}, res.nominal[0].R, res.nominal[0].omega, Rk, wk) / res.r0;
+  } else {
+    const ReachStep& st = res.steps[i - 1];
+    ratio = metric_distance_upper(st.metric(), st.R, st.omega, Rk, wk) / st.r;
+  }
+  if (!(ratio <= 1.0 + kRoundoff) && out.violation < 0.0) out.violation = t;
+  out.worst = std::max(out.worst, std::isfinite(ratio) ? ratio : 1e300);
+}
+
+/// Simulates one sample from (R, ω) at the nominal's sub-step times (m per step) against its
+/// cell's tube, U_i and balls.
+SampleOutcome check_sample(const ClosedLoop& loop, const ReachResult& res, const Mat3& R, const Vec3& w,
+                           const std::vector<double>& times, std::size_t m, double step, bool keep) {
+  SampleOutcome out;
+  simulate(loop, R, w, times, step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
+    if (keep) {
+      out.traj.t.push_back(times[k]);
+      out.traj.R.push_back(Rk);
+      out.traj.omega.push_back(wk);
+    }
+    check_tube_at(res, m, k, times[k], Rk, wk, out);
+    if (k % m != 0) return;
+    check_ball_at(res, k / m, times[k], Rk, wk, out);
+  });
+  return out;
+}
+
+/// The report's figures over all samples, merged under a lock.
+struct SampleTotals {
+  std::atomic<long> inside{0};
+  std::atomic<long> tube_inside{0};
+  std::mutex mutex;
+  double tube_excess{0.0};
+  double first_tube_violation{-1.0};
+  double max_ratio{0.0};
+  double first_violation{-1.0};
+};
+
+/// Adds one sample's outcome to the totals (and its trajectory to the report when kept).
+void merge_sample(SampleTotals& totals, SampleOutcome& o, SoundnessReport& rep, long s, bool keep) {
+  if (o.violation < 0.0) ++totals.inside;
+  if (o.tube_violation < 0.0) ++totals.tube_inside;
+  std::lock_guard<std::mutex> lock(totals.mutex);
+  totals.tube_excess = std::max(totals.tube_excess, o.worst_excess);
+  if (o.tube_violation >= 0.0 &&
+      (totals.first_tube_violation < 0.0 || o.tube_violation < totals.first_tube_violation)) {
+    totals.first_tube_violation = o.tube_violation;
+  }
+  totals.max_ratio = std::max(totals.max_ratio, o.worst);
+  if (o.violation >= 0.0 && (totals.first_violation < 0.0 || o.violation < totals.first_violation)) {
+    totals.first_violation = o.violation;
+  }
+  if (keep) rep.kept[static_cast<std::size_t>(s)] = std::move(o.traj);
+}
+
 }  // namespace
 
 SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
@@ -50,13 +145,7 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   std::vector<double> times;
   for (const auto& p : r0.nominal) times.push_back(p.t);
   const std::size_t m = (times.size() - 1) / r0.steps.size();
-  std::atomic<long> inside{0};
-  std::atomic<long> tube_inside{0};
-  double tube_excess = 0.0;
-  double first_tube_violation = -1.0;
-  std::mutex mutex;
-  double max_ratio = 0.0;
-  double first_violation = -1.0;
+  SampleTotals totals;
   rep.kept.resize(static_cast<std::size_t>(std::min<long>(settings.keep, settings.samples)));
 
   parallel::parallel_for(settings.samples, settings.threads, [&](long s) {
@@ -64,67 +153,17 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
     const bool boundary = (s % 2) == 0;
     const Mat3 R = whole.R0 * lie::exp(sample_ball(g, whole.attitude_radius, boundary));
     const Vec3 w = whole.omega0 + sample_ball(g, whole.omega_radius, boundary);
-    // The cell whose initial set contains the sample.
-    std::size_t cell = cells.size();
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (lie::distance(cells[c].R0, R) <= cells[c].attitude_radius * (1 + 1e-12) + 1e-15 &&
-          (w - cells[c].omega0).norm() <= cells[c].omega_radius * (1 + 1e-12) + 1e-15) {
-        cell = c;
-        break;
-      }
-    }
-    if (cell == cells.size()) throw NumericalError("soundness check: sample outside every cell");
-    const ReachResult& res = results[cell];
-    double worst = 0.0;
-    double violation = -1.0;
-    double worst_excess = 0.0;
-    double tube_violation = -1.0;
+    const std::size_t cell = containing_cell(cells, R, w);
     const bool keep = s < static_cast<long>(rep.kept.size());
-    SampleTrajectory traj;
-    simulate(loop, R, w, times, settings.step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
-      if (keep) {
-        traj.t.push_back(times[k]);
-        traj.R.push_back(Rk);
-        traj.omega.push_back(wk);
-      }
-      // Tube segments j = k − 1 (ending at t_k) and j = k (starting there), and their U_i.
-      for (const std::size_t j : {k - 1, k}) {
-        if (j >= res.steps.size() * m) continue;  // k − 1 wraps for k = 0
-        const ReachStep& st = res.steps[j / m];
-        const double ex = std::max(excess(st.state_tube[j % m].attitude, st.state_tube[j % m].omega, Rk, wk),
-                                   excess(st.attitude_box, st.omega_box, Rk, wk));
-        if (!(ex <= 0.0) && tube_violation < 0.0) tube_violation = times[k];
-        worst_excess = std::max(worst_excess, std::isfinite(ex) ? ex : 1e300);
-      }
-      if (k % m != 0) return;
-      const std::size_t i = k / m;
-      double ratio;
-      if (i == 0) {
-        ratio = metric_distance_upper({res.Q0, res.S0, res.P0}, res.nominal[0].R, res.nominal[0].omega, Rk, wk) / res.r0;
-      } else {
-        const ReachStep& st = res.steps[i - 1];
-        ratio = metric_distance_upper(st.metric(), st.R, st.omega, Rk, wk) / st.r;
-      }
-      if (!(ratio <= 1.0 + kRoundoff) && violation < 0.0) violation = times[k];
-      worst = std::max(worst, std::isfinite(ratio) ? ratio : 1e300);
-    });
-    if (violation < 0.0) ++inside;
-    if (tube_violation < 0.0) ++tube_inside;
-    std::lock_guard<std::mutex> lock(mutex);
-    tube_excess = std::max(tube_excess, worst_excess);
-    if (tube_violation >= 0.0 && (first_tube_violation < 0.0 || tube_violation < first_tube_violation)) {
-      first_tube_violation = tube_violation;
-    }
-    max_ratio = std::max(max_ratio, worst);
-    if (violation >= 0.0 && (first_violation < 0.0 || violation < first_violation)) first_violation = violation;
-    if (keep) rep.kept[static_cast<std::size_t>(s)] = std::move(traj);
+    SampleOutcome outcome = check_sample(loop, results[cell], R, w, times, m, settings.step, keep);
+    merge_sample(totals, outcome, rep, s, keep);
   });
-  rep.inside = inside.load();
-  rep.max_ratio = max_ratio;
-  rep.first_violation_time = first_violation;
-  rep.tube_inside = tube_inside.load();
-  rep.tube_max_excess = tube_excess;
-  rep.tube_first_violation_time = first_tube_violation;
+  rep.inside = totals.inside.load();
+  rep.max_ratio = totals.max_ratio;
+  rep.first_violation_time = totals.first_violation;
+  rep.tube_inside = totals.tube_inside.load();
+  rep.tube_max_excess = totals.tube_excess;
+  rep.tube_first_violation_time = totals.first_tube_violation;
   rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return rep;
 }

@@ -7,7 +7,7 @@
 ///  1. A priori enclosure (interval Picard–Lindelöf): a box G ⊂ R³ of ω and a bi-invariant ball
 ///     of radius ρ_G around R_n(s) such that W_s + [0, h]·X_ω(G) ⊆ G and e_R(s) + h·max_G‖ω‖ ≤ ρ_G.
 ///     Then every trajectory starting in the set at s stays in G over [s, s+h].
-///  2. Deviation bounds z = (d_1, d_2, d_3, e_ω, e_R) from the nominal — |ω_k − ω_n,k| ≤ d_k,
+///  2. Deviation bounds z = (d_1, d_2, d_3, e_ω, e_R) from the nominal (deviation.hpp) — |ω_k − ω_n,k| ≤ d_k,
 ///     ‖ω − ω_n‖ ≤ e_ω, d(R, R_n) ≤ e_R — obey the linear comparison system ż ≤ M z, with M Metzler:
 ///       ḋ_k ≤ sup B_kk d_k + Σ_{j≠k} sup|B_kj| d_j + ‖row_k A‖ e_R       (interval Jacobians on G)
 ///       ė_ω ≤ μ₂(B) e_ω + ‖A‖ e_R,   ė_R ≤ e_ω + max_G‖ω‖ e_R
@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "attiguard/reach/closed_loop.hpp"
+#include "attiguard/reach/deviation.hpp"
 
 namespace attiguard::reach {
 
@@ -34,9 +35,6 @@ struct NominalPoint {
   Mat3 R{Mat3::Identity()};
   Vec3 omega{Vec3::Zero()};
 };
-
-/// z = (d_1, d_2, d_3, e_ω, e_R): deviation bounds from the nominal (see file comment).
-using Deviation = Eigen::Matrix<double, 5, 1>;
 
 /// Sound enclosure of every state over [t0, t1].
 struct TubeSegment {
@@ -48,10 +46,10 @@ struct TubeSegment {
 
 struct TubeResult {
   std::vector<TubeSegment> segments;  ///< one per sub-step
-  Deviation end{Deviation::Zero()};   ///< deviation bounds at the last nominal point
+  Deviation end;                      ///< deviation bounds at the last nominal point
   /// Deviation bounds of the exact trajectory from nominal.front() at the last nominal point:
   /// the nominal's integration error over the whole span.
-  Deviation nominal_error{Deviation::Zero()};
+  Deviation nominal_error;
   Box3 omega_hull;                    ///< hull of the segments' ω boxes
   AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
 };

@@ -34,49 +34,28 @@ std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, st
   return std::make_shared<reach::PdLoop>(J, kp, kd, sys.rotation("reference"));
 }
 
-}  // namespace
-
-reach::ReachScenario parse_reach(const Document& doc) {
-  reach::ReachScenario sc;
-  const TableReader root(doc);
-  declare(root, {"kind", "name", "description", "system", "initial", "reach", "partition",
-                 "soundness", "safety", "output"});
-  sc.name = read_header(root, doc, "reach", "reach");
-
-  sc.loop = parse_system(root.table("system"), sc.model);
-
+/// [initial]: the initial set B_I(R0, a) × B_I(ω0, b) and P_0 (reach paper, Algorithm 1).
+void parse_initial(const TableReader& root, reach::InitialSet& initial) {
   const TableReader init = root.table("initial");
   declare(init, {"attitude", "attitude_radius", "omega_b", "omega_radius", "metric_P"});
-  if (init.has("attitude")) sc.initial.R0 = init.rotation("attitude");
-  sc.initial.attitude_radius =
-      init.number("attitude_radius", {0.0, std::numbers::pi, false, true});
-  sc.initial.omega0 = init.vector3("omega_b");
-  sc.initial.omega_radius = init.number("omega_radius", NumberRule::non_negative());
+  if (init.has("attitude")) initial.R0 = init.rotation("attitude");
+  initial.attitude_radius = init.number("attitude_radius", {0.0, std::numbers::pi, false, true});
+  initial.omega0 = init.vector3("omega_b");
+  initial.omega_radius = init.number("omega_radius", NumberRule::non_negative());
   if (init.has("metric_P")) {
-    sc.initial.P0 = init.matrix3("metric_P");
-    if (!reach::is_spd(sc.initial.P0)) {
+    initial.P0 = init.matrix3("metric_P");
+    if (!reach::is_spd(initial.P0)) {
       init.fail("metric_P", "must be symmetric positive definite (P_0 of Algorithm 1)");
     }
   }
-  if (sc.initial.attitude_radius + sc.initial.omega_radius <= 0.0) {
+  if (initial.attitude_radius + initial.omega_radius <= 0.0) {
     init.fail("omega_radius", "attitude_radius and omega_radius must not both be 0");
   }
+}
 
-  reach::ConReachSettings& s = sc.settings;
-  const TableReader r = root.table("reach");
-  declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
-              "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates",
-              "metric", "rigour"});
-  s.horizon = r.number("horizon", NumberRule::positive());
-  s.steps = static_cast<int>(r.integer("steps", 1, 100000));
-  // Default (docs/reach.md, "Coupled metrics"): coupled where the closed loop feeds the
-  // attitude back (its LMI depends on R: the R–ω coupling is what makes it contract), the
-  // paper's product metric otherwise.
-  s.metric = enum_or(r, "metric", reach::kMetricNames,
-                     sc.loop->lmi_depends_on_attitude() ? reach::MetricKind::coupled
-                                                        : reach::MetricKind::product);
-  // The rate selection's keys: the product metric's only (the coupled metric chooses its rate
-  // itself, docs/reach.md "Rate selection"), each mode's own.
+/// The rate selection's keys of [reach] are the product metric's only (the coupled metric
+/// chooses its rate itself, docs/reach.md "Rate selection"), each mode's own; reads rate_mode.
+void check_rate_keys(const TableReader& r, bool attitude_dependent, reach::ConReachSettings& s) {
   const bool product = s.metric == reach::MetricKind::product;
   const std::string coupled_note =
       "only used by the product metric's rate selection (metric = \"product\"); the coupled "
@@ -90,9 +69,26 @@ reach::ReachScenario parse_reach(const Document& doc) {
   r.used_only_if("min_diagonal", line_search, line_search_note);
   r.used_only_if("min_enclosure_candidates", product && !line_search,
                  product ? "only used by rate_mode = \"min_enclosure\"" : coupled_note);
-  r.used_only_if("attitude_floor_ratio", product && sc.loop->lmi_depends_on_attitude(),
+  r.used_only_if("attitude_floor_ratio", product && attitude_dependent,
                  product ? "only used when the loop's LMI depends on the attitude (a PD loop)"
                          : coupled_note);
+}
+
+/// [reach]: the ConReach settings (docs/scenario-format.md, section "reach").
+void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reach::ConReachSettings& s) {
+  const TableReader r = root.table("reach");
+  declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
+              "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates",
+              "metric", "rigour"});
+  s.horizon = r.number("horizon", NumberRule::positive());
+  s.steps = static_cast<int>(r.integer("steps", 1, 100000));
+  // Default (docs/reach.md, "Coupled metrics"): coupled where the closed loop feeds the
+  // attitude back (its LMI depends on R: the R–ω coupling is what makes it contract), the
+  // paper's product metric otherwise.
+  s.metric = enum_or(r, "metric", reach::kMetricNames,
+                     loop.lmi_depends_on_attitude() ? reach::MetricKind::coupled
+                                                    : reach::MetricKind::product);
+  check_rate_keys(r, loop.lmi_depends_on_attitude(), s);
   s.rigour = enum_or(r, "rigour", reach::kRigourNames, reach::Rigour::rigorous);
   s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
@@ -108,27 +104,33 @@ reach::ReachScenario parse_reach(const Document& doc) {
   }
   require_countable(r, "integrator_step", s.integrator_step, s.horizon, kMaxRunSteps,
                     "integrator steps of the nominal");
+}
 
+/// [partition]: cells per axis and threads, within the cell budget.
+void parse_partition(const TableReader& root, int steps, reach::ReachScenario& sc) {
   if (const auto part = root.optional_table("partition")) {
     declare(*part, {"attitude_cells", "omega_cells", "threads"});
     sc.attitude_cells = static_cast<int>(part->integer_or("attitude_cells", 1, 1, 50));
     sc.omega_cells = static_cast<int>(part->integer_or("omega_cells", 1, 1, 50));
     sc.threads = static_cast<int>(part->integer_or("threads", 0, 0, 256));
-    require_cell_budget(*part, part->has("omega_cells") ? "omega_cells" : "attitude_cells", sc.attitude_cells, sc.omega_cells, s.steps);
+    require_cell_budget(*part, part->has("omega_cells") ? "omega_cells" : "attitude_cells", sc.attitude_cells, sc.omega_cells, steps);
   }
+}
+
+/// [soundness]: samples, seed, step. Each soundness sample (and each adversarial evaluation)
+/// integrates the horizon with soundness.step: the run-step work limit per sample, and over all
+/// samples (docs/scenario-format.md, "reach", [soundness]; docs/errors.md, "Work too large").
+void parse_soundness(const TableReader& root, double horizon, reach::SoundnessSettings& soundness) {
   if (const auto snd = root.optional_table("soundness")) {
     declare(*snd, {"samples", "seed", "step"});
-    sc.soundness.samples = snd->integer_or("samples", 10000, 0, 100000000);
-    sc.soundness.seed = static_cast<std::uint64_t>(snd->integer_or("seed", 1, 0, 1L << 62));
-    sc.soundness.step = snd->number_or("step", 0.01, NumberRule::positive());
+    soundness.samples = snd->integer_or("samples", 10000, 0, 100000000);
+    soundness.seed = static_cast<std::uint64_t>(snd->integer_or("seed", 1, 0, 1L << 62));
+    soundness.step = snd->number_or("step", 0.01, NumberRule::positive());
   }
-  // Each soundness sample (and each adversarial evaluation) integrates the horizon with
-  // soundness.step: the run-step work limit per sample, and over all samples
-  // (docs/scenario-format.md, "reach", [soundness]; docs/errors.md, "Work too large").
   if (const auto snd = root.optional_table("soundness")) {
-    require_countable(*snd, "step", sc.soundness.step, s.horizon, kMaxRunSteps,
+    require_countable(*snd, "step", soundness.step, horizon, kMaxRunSteps,
                       "integrator steps of each soundness sample");
-    const double total = static_cast<double>(sc.soundness.samples) * (s.horizon / sc.soundness.step);
+    const double total = static_cast<double>(soundness.samples) * (horizon / soundness.step);
     if (!(total <= limit_value(kMaxRunSteps))) {
       snd->fail(snd->has("step") ? "step" : "samples",
                 "samples x horizon/step = " + detail::format_number(std::ceil(total)) +
@@ -139,39 +141,68 @@ reach::ReachScenario parse_reach(const Document& doc) {
                     "or a larger step");
     }
   }
-  sc.soundness.threads = sc.threads;
+}
+
+/// One [[safety.cones]] entry: the cone schema of kinds pet_erg and mission (common_tables.hpp)
+/// plus a name; the governor's field keys (delta_offset, ...) are not part of a safety cone.
+reach::PointingCone parse_safety_cone(const TableReader& c, int idx) {
+  declare(c, {"name"});
+  reach::PointingCone cone;
+  cone.name = c.string_or("name", "cone" + std::to_string(idx));
+  const ConeGeometry g = read_cone_geometry(c);
+  cone.keep_out = g.keep_out;
+  cone.axis_b = g.axis_b;
+  cone.direction_i = g.direction_i;
+  cone.half_angle = g.half_angle;
+  return cone;
+}
+
+/// [safety]: the cones and the ω bounds the reach tube must keep.
+void parse_safety(const TableReader& root, reach::SafetySpec& safety) {
   if (const auto saf = root.optional_table("safety")) {
     declare(*saf, {"cones", "omega_abs_max", "omega_norm_max"});
     if (saf->has("cones")) {
       int idx = 0;
       for (const TableReader& c : saf->array_of_tables("cones")) {
-        // The cone schema of kinds pet_erg and mission (common_tables.hpp) plus a name; the
-        // governor's field keys (delta_offset, ...) are not part of a safety cone.
-        declare(c, {"name"});
-        reach::PointingCone cone;
-        cone.name = c.string_or("name", "cone" + std::to_string(idx++));
-        const ConeGeometry g = read_cone_geometry(c);
-        cone.keep_out = g.keep_out;
-        cone.axis_b = g.axis_b;
-        cone.direction_i = g.direction_i;
-        cone.half_angle = g.half_angle;
-        sc.safety.cones.push_back(cone);
+        safety.cones.push_back(parse_safety_cone(c, idx++));
       }
     }
     if (saf->has("omega_abs_max")) {
       const Eigen::Vector3d m = saf->vector3("omega_abs_max");
       if (!(m.array() > 0.0).all()) saf->fail("omega_abs_max", "every bound must be > 0");
-      sc.safety.omega_abs_max = m;
+      safety.omega_abs_max = m;
     }
     if (saf->has("omega_norm_max")) {
-      sc.safety.omega_norm_max = saf->number("omega_norm_max", NumberRule::positive());
+      safety.omega_norm_max = saf->number("omega_norm_max", NumberRule::positive());
     }
   }
+}
+
+/// [output]: boundary points per ball and the sampled trajectories kept for plots.
+void parse_output(const TableReader& root, reach::ReachScenario& sc) {
   if (const auto out = root.optional_table("output")) {
     declare(*out, {"boundary_points", "plot_trajectories"});
     sc.boundary_points = static_cast<int>(out->integer_or("boundary_points", 200, 0, 100000));
     sc.soundness.keep = static_cast<int>(out->integer_or("plot_trajectories", 20, 0, 10000));
   }
+}
+
+}  // namespace
+
+reach::ReachScenario parse_reach(const Document& doc) {
+  reach::ReachScenario sc;
+  const TableReader root(doc);
+  declare(root, {"kind", "name", "description", "system", "initial", "reach", "partition",
+                 "soundness", "safety", "output"});
+  sc.name = read_header(root, doc, "reach", "reach");
+  sc.loop = parse_system(root.table("system"), sc.model);
+  parse_initial(root, sc.initial);
+  parse_settings(root, *sc.loop, sc.settings);
+  parse_partition(root, sc.settings.steps, sc);
+  parse_soundness(root, sc.settings.horizon, sc.soundness);
+  sc.soundness.threads = sc.threads;
+  parse_safety(root, sc.safety);
+  parse_output(root, sc);
   root.finish();
   return sc;
 }

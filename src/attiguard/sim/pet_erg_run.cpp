@@ -2,19 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "attiguard/core/four_digits.hpp"
-#include "attiguard/control/torque_quantizer.hpp"
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
+#include "attiguard/sim/held_actuation.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
 namespace attiguard::sim {
@@ -177,7 +177,6 @@ std::vector<double> stop_times(const std::vector<Stop>& plan) {
   return times;
 }
 
-/// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
 /// The run from t = 0 over the stop plan of `sc` (both loops): `monitor` at t = 0, at every
 /// integrator step and at every stop; at each stop `at_stop(stop, t, state)` first (sampling or
 /// the control instant); rows to `on_output` at t = 0 and at the output stops.
@@ -207,15 +206,21 @@ integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const
   return integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
 }
 
-PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  const governor::AttitudeGovernor gov(governor_params(sc), sc.cones);
-  const dynamics::RigidBody body(sc.params.J);
-  PetErgResult r = initial_result(sc, gov);
-
+/// The state of either loop at t = 0: (R_0, R_g(0), ω_0) of the scenario's [initial].
+PetErgState pet_erg_initial_state(const PetErgScenario& sc) {
   PetErgState y;
   y.R[0] = sc.R0_ib;
   y.R[1] = sc.R_g0;
   y.x = sc.omega0_b;
+  return y;
+}
+
+/// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
+PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  const governor::AttitudeGovernor gov(governor_params(sc), sc.cones);
+  const dynamics::RigidBody body(sc.params.J);
+  PetErgResult r = initial_result(sc, gov);
+  PetErgState y = pet_erg_initial_state(sc);
   bool flag = sc.params.mode == GovernorMode::continuous;
 
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
@@ -252,139 +257,156 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   return r;
 }
 
+/// The governor of the flight loop (docs/pet-erg.md, sections 10 and 13): built with the
+/// bounded reference step and, with robust margins, the reduced limits and tightened cones.
+governor::AttitudeGovernor pet_erg_flight_governor(const PetErgScenario& sc) {
+  return governor::AttitudeGovernor(governor_params(sc), governor_cones(sc));
+}
+
+/// The disturbance d on the plant of the flight loop (docs/pet-erg.md, section 11): the
+/// scenario's d(t), or the adversarial torque from the true state and R_g, held from each control
+/// instant or recomputed at every evaluation of the field.
+class PetErgPlantDisturbance {
+ public:
+  explicit PetErgPlantDisturbance(const PetErgScenario& sc)
+      : im_(sc.imperfections),
+        adversarial_(im_.disturbance.kind == dynamics::DisturbanceKind::adversarial),
+        continuous_(adversarial_ && im_.adversary.update == DisturbanceUpdate::continuous),
+        adversary_(make_adversary(sc.params.J, sc.cones, im_.disturbance.bound, im_.adversary.weight)) {}
+
+  /// d at time t in the state s (an evaluation of the field).
+  [[nodiscard]] Vec3 at(double t, const PetErgState& s) const noexcept {
+    if (continuous_) return adversarial_torque(adversary_, s.R[0], s.x, s.R[1]);
+    return adversarial_ ? held_ : im_.disturbance.at(t);
+  }
+  /// At a control instant, once R_g is set: the adversarial torque held over the period.
+  void hold(const PetErgState& s) noexcept {
+    if (adversarial_) held_ = adversarial_torque(adversary_, s.R[0], s.x, s.R[1]);
+  }
+
+ private:
+  const PetErgImperfections& im_;
+  bool adversarial_;
+  bool continuous_;
+  AdversaryModel adversary_;
+  Vec3 held_{Vec3::Zero()};
+};
+
+/// The wheels' figures of a flight-loop run (docs/pet-erg.md, section 12): the demand and
+/// momentum ratios, the momenta at the end, and Γ_d's upper bracket of the wheel polytope.
+void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, PetErgResult& r) {
+  r.max_wheel_torque_ratio = actuation.max_wheel_torque_ratio();
+  r.max_wheel_momentum_ratio = actuation.max_wheel_momentum_ratio();
+  if (!actuation.has_wheels()) return;
+  const dynamics::WheelVector h = actuation.momenta(sc.duration);
+  r.final_wheel_momentum.assign(h.begin(), h.begin() + actuation.wheels().count());
+  r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
+}
+
 /// control_period > 0: the flight loop. AttitudeGovernor::step runs at t_k = k·h with the state
-/// of that instant and its torque is held until t_{k+1} (zero-order hold); between the instants
-/// only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight loop").
-PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  const governor::GovernorParams params = governor_params(sc);
-  governor::AttitudeGovernor gov(params, governor_cones(sc));
-  const dynamics::RigidBody body(sc.params.J);
-  PetErgResult r = initial_result(sc, gov);
+/// of that instant and its torque is held until t_{k+1} (zero-order hold, HeldActuation); between
+/// the instants only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight
+/// loop", sections 11-13).
+class PetErgFlightLoop {
+ public:
+  explicit PetErgFlightLoop(const PetErgScenario& sc)
+      : sc_(sc),
+        gov_(pet_erg_flight_governor(sc)),
+        body_(sc.params.J),
+        r_(initial_result(sc, gov_)),
+        actuation_(sc.imperfections, sc.wheels),
+        disturbance_(sc),
+        // With robust margins the level W is that of the attitude seen through the bias, R B
+        // (docs/pet-erg.md, section 13): the invariant the margins guarantee.
+        bias_frame_(gov_.params().robust ? lie::exp(sc.imperfections.sensor.attitude_bias_b)
+                                         : Mat3::Identity()) {}
 
-  PetErgState y;
-  y.R[0] = sc.R0_ib;
-  y.R[1] = sc.R_g0;
-  y.x = sc.omega0_b;
-  const PetErgImperfections& im = sc.imperfections;
-  Vec3 tau_held = Vec3::Zero();     // applied on [t_k, t_{k+1})
-  Vec3 tau_pending = Vec3::Zero();  // computed at t_k, applied from t_{k+1} (delay_periods = 1)
-  std::uint64_t k_control = 0;
-  // Reaction wheels (docs/pet-erg.md, section 12): wheel torques held like the body torque, the
-  // momenta linear in t between control instants, h(t) = h_k − u (t − t_k).
-  const bool wheels = !sc.wheels.empty();
-  const dynamics::ReactionWheelArray array =
-      wheels ? dynamics::ReactionWheelArray(sc.wheels) : dynamics::ReactionWheelArray();
-  dynamics::WheelVector u_held{};
-  dynamics::WheelVector u_pending{};
-  dynamics::WheelVector h_k{};
-  double t_k = 0.0;
-  for (int i = 0; i < array.count(); ++i) h_k[static_cast<std::size_t>(i)] = array.wheel(i).momentum0;
-  auto momenta = [&](double t) {
-    dynamics::WheelVector h = h_k;
-    for (int i = 0; i < array.count(); ++i) {
-      h[static_cast<std::size_t>(i)] -= u_held[static_cast<std::size_t>(i)] * (t - t_k);
-    }
-    return h;
-  };
+  /// t = 0: the governor starts from R_g(0) and the first control instant acts.
+  void start(PetErgState& y) {
+    gov_.reset(0.0, sc_.R_g0);
+    control(0.0, y);
+  }
 
-  // The adversarial disturbance (docs/pet-erg.md, section 11): from the true state and R_g,
-  // held from each control instant or recomputed at every evaluation of the field.
-  const bool adversarial = im.disturbance.kind == dynamics::DisturbanceKind::adversarial;
-  const bool adversary_continuous =
-      adversarial && im.adversary.update == DisturbanceUpdate::continuous;
-  const AdversaryModel adversary =
-      make_adversary(sc.params.J, sc.cones, im.disturbance.bound, im.adversary.weight);
-  Vec3 disturbance_held = Vec3::Zero();
-  auto disturbance = [&](double t, const PetErgState& s) -> Vec3 {
-    if (adversary_continuous) return adversarial_torque(adversary, s.R[0], s.x, s.R[1]);
-    return adversarial ? disturbance_held : im.disturbance.at(t);
-  };
+  /// From t = 0 to the end over the stop plan, the control instants at their stops.
+  integrate::IntegrationStats fly(PetErgState& y, const PetErgRowObserver& on_output) {
+    auto field = [this](double t, const PetErgState& s) { return this->field(t, s); };
+    auto monitor = [this](double t, const PetErgState& s) { return this->monitor(t, s); };
+    auto at_stop = [this](const Stop& stop, double t, PetErgState& s) {
+      if (stop.control) {
+        control(t, s);
+      }
+    };
+    return integrate_over_stops(sc_, field, y, monitor, at_stop, on_output);
+  }
 
-  auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
+  /// The figures of the run ending in y.
+  PetErgResult figures(const PetErgState& y, const integrate::IntegrationStats& stats) {
+    finish(sc_, y, stats, r_);
+    finish_wheels(sc_, actuation_, r_);
+    return std::move(r_);
+  }
+
+ private:
+  /// Between control instants: (R, ω) under eq. (1) with the held torque, the disturbance d
+  /// (docs/pet-erg.md, section 11) and the wheels' gyroscopic torque (A h) × ω (section 12).
+  PetErgState::Tangent field(double t, const PetErgState& s) const {
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3).setZero();  // R_g changes only at the control instants
-    // eq. (1) with the held torque and the disturbance d (docs/pet-erg.md, section 11) and
-    // the wheels' gyroscopic torque (A h) × ω (section 12)
-    Vec3 tau = tau_held + disturbance(t, s);
-    if (wheels) tau += array.body_momentum(momenta(t)).cross(s.x);
-    d.segment<3>(6) = body.angular_acceleration(s.x, tau);
+    Vec3 tau = actuation_.torque_b() + disturbance_.at(t, s);
+    if (actuation_.has_wheels()) tau += actuation_.momentum_b(t).cross(s.x);
+    d.segment<3>(6) = body_.angular_acceleration(s.x, tau);
     return d;
-  };
-  // The governor's view of the current state with the torque actually applied.
-  // With robust margins the level W is that of the attitude seen through the bias, R B
-  // (docs/pet-erg.md, section 13): the invariant the margins guarantee.
-  const Mat3 bias_frame = params.robust ? lie::exp(im.sensor.attitude_bias_b) : Mat3::Identity();
-  auto view = [&](const PetErgState& s, const Mat3& R_d) {
-    GovernorOutput out = gov.evaluate(s.R[0] * bias_frame, s.x, s.R[1], R_d, gov.trigger_flag());
-    out.tau_b = tau_held;
-    // the true constraints (with robust margins the governor enforces tightened cones)
-    for (std::size_t i = 0; i < sc.cones.size(); ++i) {
-      out.margins[i] = governor::pointing_margin(sc.cones[i], s.R[0]);
-    }
-    return out;
-  };
-  auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
-    const Mat3 R_d = sc.desired.at(t);
-    const GovernorOutput out = view(s, R_d);
-    record(sc, r, t, R_d, s.R[0], out);
-    if (wheels) {
-      const dynamics::WheelVector h = momenta(t);
-      for (int i = 0; i < array.count(); ++i) {
-        r.max_wheel_momentum_ratio = std::max(
-            r.max_wheel_momentum_ratio, std::abs(h[static_cast<std::size_t>(i)]) / array.wheel(i).momentum_max);
-      }
-    }
-    return out;
-  };
-  auto control = [&](double t, PetErgState& s) {
-    // What the flight software sees (sensor errors), computes, and commands (quantised,
-    // possibly one period late): docs/pet-erg.md, section 11.
-    const dynamics::Measurement m = im.sensor.measure(s.R[0], s.x, k_control++);
-    const GovernorOutput& out = gov.step(t, m.R_ib, m.omega_b, sc.desired.at(t));
-    const Vec3 command = control::quantize_torque(out.tau_b, im.torque_quantum);
-    if (wheels) {
-      h_k = momenta(t);
-      t_k = t;
-      // u = A⁺τ (minimum norm), clipped to the wheels' limits; the demand ratio is reported.
-      for (int i = 0; i < array.count(); ++i) {
-        r.max_wheel_torque_ratio = std::max(r.max_wheel_torque_ratio,
-                                            std::abs(array.allocation_row(i).dot(command)) /
-                                                array.wheel(i).torque_max);
-      }
-      const dynamics::WheelVector u = array.allocate(command);
-      u_held = im.delay_periods == 1 ? u_pending : u;
-      u_pending = u;
-      tau_held = array.body_torque(u_held);
-    } else if (im.delay_periods == 1) {
-      tau_held = tau_pending;
-      tau_pending = command;
-    } else {
-      tau_held = command;
-    }
-    s.R[1] = params.mode == GovernorMode::none ? sc.desired.at(t) : gov.reference();
-    if (adversarial) disturbance_held = adversarial_torque(adversary, s.R[0], s.x, s.R[1]);
-    if (out.sampled) {
-      ++r.samples;
-      r.samples_updating += out.trigger ? 1 : 0;
-    }
-  };
-
-  gov.reset(0.0, sc.R_g0);
-  control(0.0, y);
-  auto at_stop = [&](const Stop& stop, double t, PetErgState& s) {
-    if (stop.control) {
-      control(t, s);
-    }
-  };
-  const integrate::IntegrationStats stats = integrate_over_stops(sc, field, y, monitor, at_stop, on_output);
-  finish(sc, y, stats, r);
-  if (wheels) {
-    const dynamics::WheelVector h = momenta(sc.duration);
-    r.final_wheel_momentum.assign(h.begin(), h.begin() + array.count());
-    r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
   }
-  return r;
+
+  /// The governor's view of the true state with the torque actually applied, the margins of the
+  /// true constraints (with robust margins the governor enforces tightened cones).
+  GovernorOutput view(const PetErgState& s, const Mat3& R_d) const {
+    GovernorOutput out = gov_.evaluate(s.R[0] * bias_frame_, s.x, s.R[1], R_d, gov_.trigger_flag());
+    out.tau_b = actuation_.torque_b();
+    for (std::size_t i = 0; i < sc_.cones.size(); ++i) {
+      out.margins[i] = governor::pointing_margin(sc_.cones[i], s.R[0]);
+    }
+    return out;
+  }
+
+  /// t = 0, every integrator step and every stop: the figures and the wheels' momenta.
+  GovernorOutput monitor(double t, const PetErgState& s) {
+    const Mat3 R_d = sc_.desired.at(t);
+    const GovernorOutput out = view(s, R_d);
+    record(sc_, r_, t, R_d, s.R[0], out);
+    actuation_.observe_momenta(t);
+    return out;
+  }
+
+  /// Control instant t: what the flight software computes and commands (HeldActuation), the
+  /// governor's R_g into the state, the disturbance held, the sampling counted.
+  void control(double t, PetErgState& s) {
+    const GovernorOutput& out = actuation_.control(gov_, t, s.R[0], s.x, sc_.desired.at(t));
+    s.R[1] = gov_.params().mode == GovernorMode::none ? sc_.desired.at(t) : gov_.reference();
+    disturbance_.hold(s);
+    if (out.sampled) {
+      ++r_.samples;
+      r_.samples_updating += out.trigger ? 1 : 0;
+    }
+  }
+
+  const PetErgScenario& sc_;
+  governor::AttitudeGovernor gov_;
+  const dynamics::RigidBody body_;
+  PetErgResult r_;
+  HeldActuation actuation_;
+  PetErgPlantDisturbance disturbance_;
+  const Mat3 bias_frame_;
+};
+
+/// control_period > 0: the flight loop of PetErgFlightLoop (docs/pet-erg.md, "Flight loop").
+PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  PetErgFlightLoop loop(sc);
+  PetErgState y = pet_erg_initial_state(sc);
+  loop.start(y);
+  const integrate::IntegrationStats stats = loop.fly(y, on_output);
+  return loop.figures(y, stats);
 }
 
 }  // namespace
@@ -480,10 +502,9 @@ std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
   return {};
 }
 
-}  // namespace
-
-nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) {
-  nlohmann::json j;
+/// The run's settings: kind, name, governor, integrator, times, imperfections (docs/pet-erg.md,
+/// section 11) and the kind of margins (section 13).
+void add_run_settings(nlohmann::json& j, const PetErgScenario& sc) {
   j["kind"] = "pet_erg";
   j["name"] = sc.name;
   j["governor"] = std::string(governor::kGovernorModeNames.name(sc.params.mode));
@@ -492,17 +513,24 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
   j["margins"] = sc.params.robust ? "robust" : "nominal";
-  if (sc.params.robust) j["robust"] = robust_json(sc, r);
-  if (!sc.wheels.empty()) {
-    j["wheels"] = static_cast<long>(sc.wheels.size());
-    j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
-    j["wheel_binding"] = sc.wheel_binding;
-    j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
-    j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
-    j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
-    j["wheel_momentum_satisfied"] = r.max_wheel_momentum_ratio <= 1.0;
-    j["final_wheel_momentum"] = r.final_wheel_momentum;
-  }
+}
+
+/// The reaction wheels' figures (docs/pet-erg.md, section 12), with wheels only.
+void add_wheels(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
+  if (sc.wheels.empty()) return;
+  j["wheels"] = static_cast<long>(sc.wheels.size());
+  j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
+  j["wheel_binding"] = sc.wheel_binding;
+  j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
+  j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
+  j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
+  j["wheel_momentum_satisfied"] = r.max_wheel_momentum_ratio <= 1.0;
+  j["final_wheel_momentum"] = r.final_wheel_momentum;
+}
+
+/// The gains and the governor's parameters [PET-ERG eq. (3)-(6)] and the thresholds of the run
+/// (docs/pet-erg.md, sections 2-3).
+void add_governor_figures(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   j["kp"] = sc.params.gains.kp;
   j["kd"] = sc.params.gains.kd;
   j["tau_max"] = sc.params.tau_max;
@@ -518,6 +546,10 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["gamma_g_initial"] = finite_or_null(r.gamma_g_initial);
   j["gamma_initial"] = r.gamma_initial;
   j["V_initial"] = r.V_initial;
+}
+
+/// The constraints (2a), (2b) of the PET-ERG paper, the wheels' limits and the level V − Γ.
+void add_constraints(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   j["max_torque_norm"] = r.max_torque_norm;
   const bool torque_ok = r.max_torque_norm <= sc.params.tau_max;
   j["torque_limit_satisfied"] = torque_ok;
@@ -539,6 +571,10 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["lyapunov_level"] = sc.params.robust ? "W" : "V";
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
+}
+
+/// The end of the run: final errors, convergence and the outcome (docs/pet-erg.md, "Outcomes").
+void add_outcome(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   j["final_attitude_error"] = r.final_attitude_error;
   j["final_reference_error"] = r.final_reference_error;
   j["final_omega_norm"] = r.final_omega_norm;
@@ -558,22 +594,44 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
       r.convergence_time >= 0.0 && r.eigenaxis_bang_bang_time > 0.0
           ? nlohmann::json(r.convergence_time / r.eigenaxis_bang_bang_time)
           : nlohmann::json(nullptr);
+}
+
+/// The sampling of (5) of the PET-ERG paper and the integrator's counters.
+void add_counters(nlohmann::json& j, const PetErgResult& r) {
   j["samples"] = r.samples;
   j["samples_updating"] = r.samples_updating;
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejected_steps;
   j["evaluations"] = r.evaluations;
-  nlohmann::json cones = nlohmann::json::array();
+}
+
+/// The cones (2b) of the PET-ERG paper (the true constraints), with δ, ζ of their bands.
+nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {
+  nlohmann::json j = nlohmann::json::array();
   for (const governor::ConeConstraint& c : sc.cones) {
-    cones.push_back({{"axis_b", vec_json(c.axis_b)},
-                     {"direction_i", vec_json(c.direction_i)},
-                     {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi},
-                     {"cos_theta_c", c.cos_theta_c},
-                     {"delta", c.delta},
-                     {"zeta", c.zeta},
-                     {"repulsive_gain", c.repulsive_gain}});
+    j.push_back({{"axis_b", vec_json(c.axis_b)},
+                 {"direction_i", vec_json(c.direction_i)},
+                 {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi},
+                 {"cos_theta_c", c.cos_theta_c},
+                 {"delta", c.delta},
+                 {"zeta", c.zeta},
+                 {"repulsive_gain", c.repulsive_gain}});
   }
-  j["cones"] = cones;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) {
+  nlohmann::json j;
+  add_run_settings(j, sc);
+  if (sc.params.robust) j["robust"] = robust_json(sc, r);
+  add_wheels(j, sc, r);
+  add_governor_figures(j, sc, r);
+  add_constraints(j, sc, r);
+  add_outcome(j, sc, r);
+  add_counters(j, r);
+  j["cones"] = pet_erg_cones_json(sc);
   if (r.output_rows > 0) j["output_rows"] = r.output_rows;
   return j;
 }

@@ -22,7 +22,7 @@ std::filesystem::path identity_dir(const std::string& name) {
   return dir;
 }
 
-std::string file_text(const std::filesystem::path& path) {
+std::string identity_file_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
@@ -31,7 +31,7 @@ std::string file_text(const std::filesystem::path& path) {
 
 /// The message of the InputError `f` throws ("" when it throws none).
 template <class F>
-std::string input_error_of(F&& f) {
+std::string identity_error_of(F&& f) {
   try {
     f();
   } catch (const InputError& e) {
@@ -45,7 +45,7 @@ const CampaignIdentity kIdentity{"0123456789abcdef0123", 7, "1.2.3", "pet_erg"};
 TEST(CampaignIdentity, IsWrittenAsIndentedJsonThroughAPartialFile) {
   const auto dir = identity_dir("write");
   write_identity(dir / "campaign_identity.json", kIdentity);
-  EXPECT_EQ(file_text(dir / "campaign_identity.json"),
+  EXPECT_EQ(identity_file_text(dir / "campaign_identity.json"),
             "{\n  \"attiguard_version\": \"1.2.3\",\n  \"kind\": \"pet_erg\",\n"
             "  \"scenario_sha256\": \"0123456789abcdef0123\",\n  \"seed\": 7\n}\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "campaign_identity.json.partial"));
@@ -56,16 +56,16 @@ TEST(CampaignIdentity, ResumeAcceptsTheSameIdentityAndNamesTheFirstDifference) {
   const auto dir = identity_dir("resume");
   const auto file = dir / "campaign_identity.json";
   write_identity(file, kIdentity);
-  EXPECT_EQ(input_error_of([&] { check_resume_identity(file, kIdentity, 5); }), "");
+  EXPECT_EQ(identity_error_of([&] { check_resume_identity(file, kIdentity, 5); }), "");
   CampaignIdentity other = kIdentity;
   other.seed = 8;
   other.kind = "waypoint";
-  const std::string seed = input_error_of([&] { check_resume_identity(file, other, 5); });
+  const std::string seed = identity_error_of([&] { check_resume_identity(file, other, 5); });
   EXPECT_EQ(seed, file.string() + ": --resume: the seed differs: the campaign in this folder has 7, "
                                   "this invocation 8; resume with the same one or start a new "
                                   "campaign in another --out");
   other.seed = kIdentity.seed;
-  EXPECT_NE(input_error_of([&] { check_resume_identity(file, other, 5); })
+  EXPECT_NE(identity_error_of([&] { check_resume_identity(file, other, 5); })
                 .find("the scenario kind differs: the campaign in this folder has pet_erg"),
             std::string::npos);
   std::filesystem::remove_all(dir);
@@ -74,12 +74,12 @@ TEST(CampaignIdentity, ResumeAcceptsTheSameIdentityAndNamesTheFirstDifference) {
 TEST(CampaignIdentity, AMissingOrUnreadableFileIsRefusedOnlyWhenRowsExist) {
   const auto dir = identity_dir("missing");
   const auto file = dir / "campaign_identity.json";
-  EXPECT_EQ(input_error_of([&] { check_resume_identity(file, kIdentity, 0); }), "");
-  EXPECT_NE(input_error_of([&] { check_resume_identity(file, kIdentity, 3); })
+  EXPECT_EQ(identity_error_of([&] { check_resume_identity(file, kIdentity, 0); }), "");
+  EXPECT_NE(identity_error_of([&] { check_resume_identity(file, kIdentity, 3); })
                 .find("--resume: missing, so the 3 rows of runs.csv"),
             std::string::npos);
   std::ofstream(file) << "{ not json";
-  EXPECT_NE(input_error_of([&] { check_resume_identity(file, kIdentity, 3); })
+  EXPECT_NE(identity_error_of([&] { check_resume_identity(file, kIdentity, 3); })
                 .find("not a campaign identity (unreadable JSON)"),
             std::string::npos);
   std::filesystem::remove_all(dir);

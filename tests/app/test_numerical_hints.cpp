@@ -15,7 +15,7 @@
 namespace attiguard::app {
 namespace {
 
-std::string example_text(const std::string& name) {
+std::string hint_example_text(const std::string& name) {
   std::ifstream in(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + name, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
@@ -23,7 +23,7 @@ std::string example_text(const std::string& name) {
 }
 
 /// `text` with its first `from` replaced by `to` (which must be there).
-std::string with(std::string text, const std::string& from, const std::string& to) {
+std::string hint_with(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) text.replace(at, from.size(), to);
@@ -31,7 +31,7 @@ std::string with(std::string text, const std::string& from, const std::string& t
 }
 
 TEST(NumericalHints, AFixedStepAboveTheStabilityLimitIsLocatedAtTheStep) {
-  const std::string stiff = with(with(example_text("rigid_body_pd.toml"), "inertia = [1.0, 2.0, 3.0]",
+  const std::string stiff = hint_with(hint_with(hint_example_text("rigid_body_pd.toml"), "inertia = [1.0, 2.0, 3.0]",
                                       "inertia = [1e-3, 1e3, 1e3]"),
                                  "step = 0.01", "step = 0.05");
   const scenario::Document doc = scenario::parse_document(stiff, "stiff.toml");
@@ -41,13 +41,13 @@ TEST(NumericalHints, AFixedStepAboveTheStabilityLimitIsLocatedAtTheStep) {
                       "0.00201 s"),
             std::string::npos)
       << hint;
-  EXPECT_EQ(rigid_body_numerical_hint(scenario::parse_document(example_text("rigid_body_pd.toml"),
+  EXPECT_EQ(rigid_body_numerical_hint(scenario::parse_document(hint_example_text("rigid_body_pd.toml"),
                                                                "pd.toml")),
             "");
 }
 
 TEST(NumericalHints, AKappaTurningTheReferenceTooFastIsLocatedAtKappa) {
-  const std::string text = with(example_text("pet_erg_paper.toml"), "kappa = 1.0", "kappa = 1e300");
+  const std::string text = hint_with(hint_example_text("pet_erg_paper.toml"), "kappa = 1.0", "kappa = 1e300");
   const std::string hint = pet_erg_numerical_hint(scenario::parse_document(text, "kappa.toml"));
   EXPECT_NE(hint.find("erg.kappa: 1e+300 turns the reference at up to kappa Gamma_d"),
             std::string::npos)
@@ -58,7 +58,7 @@ TEST(NumericalHints, TheRegistryHoldsEachKindsHintAndTheFailureHintUsesIt) {
   for (const KindHandler& k : kinds()) {
     EXPECT_EQ(k.numerical_hint != nullptr, k.name == "rigid_body" || k.name == "pet_erg") << k.name;
   }
-  const std::string text = with(example_text("pet_erg_paper.toml"), "kappa = 1.0", "kappa = 1e300");
+  const std::string text = hint_with(hint_example_text("pet_erg_paper.toml"), "kappa = 1.0", "kappa = 1e300");
   const scenario::Document doc = scenario::parse_document(text, "kappa.toml");
   EXPECT_EQ(numerical_failure_hint(doc), pet_erg_numerical_hint(doc));
   EXPECT_EQ(numerical_failure_hint(scenario::parse_document("kind = \"nonsense\"\n", "n.toml")), "");

@@ -26,7 +26,7 @@ fs::path folder_dir(const std::string& name) {
   return dir;
 }
 
-std::string file_text(const fs::path& path) {
+std::string folder_file_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
@@ -56,7 +56,7 @@ TEST(OutputFolderRun, AFailureOfTheBodyLeavesTheStatusFileAndIsRethrown) {
                              }),
                InputError);
   EXPECT_FALSE(fs::exists(dir / "tune.json"));
-  const auto status = nlohmann::json::parse(file_text(dir / "tune.json.partial"));
+  const auto status = nlohmann::json::parse(folder_file_text(dir / "tune.json.partial"));
   EXPECT_EQ(status["status"], "partial");
   EXPECT_EQ(status["kind"], "pet_erg");
   EXPECT_EQ(status["scenario"], "s.toml");

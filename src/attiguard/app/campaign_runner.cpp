@@ -154,6 +154,12 @@ std::vector<std::string> csv_columns(const Campaign& c) {
   return cols;
 }
 
+std::string csv_header(const Campaign& c) {
+  std::string s;
+  for (const std::string& col : csv_columns(c)) s += (s.empty() ? "" : ",") + col;
+  return s;
+}
+
 std::string csv_row(const Campaign& c, const RunRecord& r) {
   // Appends one at a time (GCC 12 reports a false -Wrestrict on chained operator+).
   std::string line = std::to_string(r.index);

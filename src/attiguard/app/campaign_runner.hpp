@@ -72,6 +72,8 @@ struct RunRecord {
 
 /// Header of runs.csv.
 [[nodiscard]] std::vector<std::string> csv_columns(const Campaign& c);
+/// The header line of runs.csv: csv_columns joined by commas (no newline).
+[[nodiscard]] std::string csv_header(const Campaign& c);
 /// One runs.csv line (no newline), numbers printed with %.17g (exact, locale-independent).
 [[nodiscard]] std::string csv_row(const Campaign& c, const RunRecord& r);
 

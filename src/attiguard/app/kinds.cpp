@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "attiguard/app/numerical_hints.hpp"
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/interruption.hpp"
@@ -111,12 +112,12 @@ constexpr std::array<KindHandler, 5> registry{{
     {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
      &check_kind<&scenario::parse_rigid_body>,
      &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>,
-     &rigid_body_outcome_line},
+     &rigid_body_outcome_line, &rigid_body_numerical_hint},
     {"pet_erg",
      "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
      &check_kind<&scenario::parse_pet_erg>,
      &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>,
-     &pet_erg_outcome_line},
+     &pet_erg_outcome_line, &pet_erg_numerical_hint},
     {"waypoint",
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",

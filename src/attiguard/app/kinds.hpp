@@ -39,6 +39,10 @@ struct KindHandler {
   /// The one-line outcome of the summary `run` returned (app/outcome_line.hpp; for kind reach,
   /// of reach.json).
   std::string (*outcome_line)(const nlohmann::json& summary);
+  /// The key most likely responsible for a numerical failure of a run of `doc`, located, with a
+  /// hint (app/numerical_hints.hpp, docs/errors.md "Numerical failures"), or "" when none stands
+  /// out; null for a kind without hints.
+  std::string (*numerical_hint)(const scenario::Document& doc){nullptr};
 };
 
 /// Every registered kind.

@@ -4,6 +4,7 @@
 #include "attiguard/app/output_folder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <system_error>
 #include <utility>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/app/failure.hpp"
+#include "attiguard/core/name_table.hpp"
 #include "attiguard/io/interruption.hpp"
 #include "attiguard/io/output_records.hpp"
 #include "attiguard/io/partial_file.hpp"
@@ -26,28 +28,49 @@ namespace fs = std::filesystem;
 constexpr const char* kScratch = ".scratch";  ///< campaign and tune workers' scratch folders
 constexpr const char* kPlotList = "plots.txt";  ///< io/output_records.hpp: the figures written
 
+/// The commands in OutputCommand order (the index of their tables).
+constexpr std::size_t kCommands = 7;
+
+constexpr std::size_t command_index(OutputCommand c) { return static_cast<std::size_t>(c); }
+
 /// The per-command tables, built once (two names come from scenario/).
 struct Tables {
-  std::vector<std::string> run, reach, campaign, replay, tune, view, export_aem, known;
+  std::array<std::vector<std::string>, kCommands> of;  ///< output_names(), by command_index
+  std::vector<std::string> known;
   Tables() {
     const std::string resolved = scenario::kResolvedScenarioFile;
-    run = {"trajectory.csv", "summary.json", resolved, "attitude.aem", "view.html", kPlotList};
-    reach = {"reach.json",   "trajectory.csv", "steps.csv", "tube.csv",  "boundary.csv",
-             "samples.csv", resolved,         "view.html", kPlotList};
-    campaign = {"runs.csv", "campaign.json", "campaign_identity.json", "retained.h5", resolved,
-                kPlotList};
-    replay = {"run.csv", "trajectory.csv", "summary.json", resolved, "attitude.aem", "view.html",
-              kPlotList};
-    tune = {"tune.json", scenario::scenario_file_name("best"), kPlotList};
-    view = {"view.html"};
-    export_aem = {"attitude.aem"};
-    for (const auto* set : {&run, &reach, &campaign, &replay, &tune, &view, &export_aem}) {
-      for (const std::string& n : *set) {
+    of[command_index(OutputCommand::run)] = {"trajectory.csv", "summary.json", resolved,
+                                             "attitude.aem",   "view.html",    kPlotList};
+    of[command_index(OutputCommand::reach)] = {
+        "reach.json", "trajectory.csv", "steps.csv", "tube.csv",  "boundary.csv",
+        "samples.csv", resolved,        "view.html", kPlotList};
+    of[command_index(OutputCommand::campaign)] = {
+        "runs.csv", "campaign.json", "campaign_identity.json", "retained.h5", resolved, kPlotList};
+    of[command_index(OutputCommand::replay)] = {"run.csv",      "trajectory.csv", "summary.json",
+                                                resolved,       "attitude.aem",   "view.html",
+                                                kPlotList};
+    of[command_index(OutputCommand::tune)] = {"tune.json", scenario::scenario_file_name("best"),
+                                              kPlotList};
+    of[command_index(OutputCommand::view)] = {"view.html"};
+    of[command_index(OutputCommand::export_aem)] = {"attitude.aem"};
+    for (const std::vector<std::string>& set : of) {
+      for (const std::string& n : set) {
         if (std::find(known.begin(), known.end(), n) == known.end()) known.push_back(n);
       }
     }
   }
 };
+
+/// The status file of each command (status_name()); "" for view and export-aem.
+constexpr NameTable<OutputCommand, kCommands> kStatusFiles{{{
+    {OutputCommand::run, "summary.json"},
+    {OutputCommand::reach, "reach.json"},
+    {OutputCommand::campaign, "campaign.json"},
+    {OutputCommand::replay, "summary.json"},
+    {OutputCommand::tune, "tune.json"},
+    {OutputCommand::view, ""},
+    {OutputCommand::export_aem, ""},
+}}};
 
 const Tables& tables() {
   static const Tables t;
@@ -109,44 +132,15 @@ bool is_replay_folder(const fs::directory_entry& entry) {
 }  // namespace
 
 std::span<const std::string> output_names(OutputCommand command) {
-  const Tables& t = tables();
-  switch (command) {
-    case OutputCommand::run:
-      return t.run;
-    case OutputCommand::reach:
-      return t.reach;
-    case OutputCommand::campaign:
-      return t.campaign;
-    case OutputCommand::replay:
-      return t.replay;
-    case OutputCommand::tune:
-      return t.tune;
-    case OutputCommand::view:
-      return t.view;
-    case OutputCommand::export_aem:
-      return t.export_aem;
-  }
-  return {};
+  const std::size_t i = command_index(command);
+  return i < kCommands ? std::span<const std::string>(tables().of[i]) : std::span<const std::string>();
 }
 
 std::span<const std::string> known_output_names() { return tables().known; }
 
 std::string status_name(OutputCommand command) {
-  switch (command) {
-    case OutputCommand::run:
-    case OutputCommand::replay:
-      return "summary.json";
-    case OutputCommand::reach:
-      return "reach.json";
-    case OutputCommand::campaign:
-      return "campaign.json";
-    case OutputCommand::tune:
-      return "tune.json";
-    case OutputCommand::view:
-    case OutputCommand::export_aem:
-      return {};
-  }
-  return {};
+  const std::string_view name = kStatusFiles.name(command);
+  return name == "?" ? std::string() : std::string(name);
 }
 
 OutputFolder::OutputFolder(fs::path dir, OutputCommand command, bool active,
@@ -230,6 +224,17 @@ void OutputFolder::fail(const std::exception_ptr& error) const {
   }
   if (signalled) throw io::Interrupted(f.message);
   std::rethrow_exception(error);
+}
+
+void run_in_folder(OutputFolder& folder, const std::string& kind, const fs::path& scenario,
+                   const std::function<void()>& body, bool claim_first) {
+  if (claim_first) folder.claim();
+  folder.set_subject(kind, scenario.string());
+  try {
+    body();
+  } catch (...) {
+    folder.fail(std::current_exception());
+  }
 }
 
 }  // namespace attiguard::app

@@ -15,6 +15,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -90,5 +91,14 @@ class OutputFolder {
   std::string kind_;
   std::string scenario_;
 };
+
+/// Runs one command's `body` inside the output-folder protocol (docs/conventions.md, "Outputs"):
+/// claims `folder` first unless `claim_first` is false (`campaign --resume` claims its folder
+/// itself once the identity matches), names `scenario` (and `kind`, "" while unknown) in its
+/// status file, then runs `body`; an exception from it fails the folder (OutputFolder::fail,
+/// which rethrows it).
+void run_in_folder(OutputFolder& folder, const std::string& kind,
+                   const std::filesystem::path& scenario, const std::function<void()>& body,
+                   bool claim_first = true);
 
 }  // namespace attiguard::app

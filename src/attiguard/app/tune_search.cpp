@@ -168,7 +168,10 @@ TunePoint evaluate_candidate(const scenario::Document& nominal,
   return p;
 }
 
-TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s) {
+namespace {
+
+/// The settings and the scenario a search can run on: InputError naming what is not.
+void check_tune_settings(const scenario::Document& nominal, const TuneSettings& s) {
   if (s.parameters.empty()) throw InputError("attiguard tune: no parameter to search");
   if (s.budget < 4) throw InputError("--budget: must be at least 4 runs");
   if (s.threads < 1) throw InputError("--threads: must be at least 1");
@@ -182,11 +185,41 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
     throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
                                              "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
   }
-  {  // every key can be set (a key of a table the scenario does not have is an input error)
-    std::vector<double> lows;
-    for (const TuneParameter& p : s.parameters) lows.push_back(p.min);
-    (void)tune_candidate(nominal, s.parameters, lows);
+  // Every key can be set (a key of a table the scenario does not have is an input error).
+  std::vector<double> lows;
+  for (const TuneParameter& p : s.parameters) lows.push_back(p.min);
+  (void)tune_candidate(nominal, s.parameters, lows);
+}
+
+/// Appends the evaluated `batch` to the search's points in `phase`; whether it holds a new best.
+bool append_points(TuneResult& r, std::vector<TunePoint> batch, const char* phase) {
+  bool improved = false;
+  for (TunePoint& p : batch) {
+    p.index = static_cast<long>(r.points.size());
+    p.phase = phase;
+    if (faster(p, r.best, r.points)) {
+      r.best = r.points.size();
+      improved = true;
+    }
+    r.points.push_back(std::move(p));
   }
+  return improved;
+}
+
+/// The next `n` candidates: perturbed around the best point within `radius`, or (nothing
+/// admissible yet) a new Latin hypercube, to keep exploring.
+std::vector<std::vector<double>> next_candidates(const TuneSettings& s, const TuneResult& r, long n,
+                                                 double radius, campaign::Rng& rng) {
+  if (!r.best) return latin_hypercube(s.parameters, n, rng);
+  std::vector<std::vector<double>> batch;
+  for (long i = 0; i < n; ++i) batch.push_back(perturb(s.parameters, r.points[*r.best].values, radius, rng));
+  return batch;
+}
+
+}  // namespace
+
+TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s) {
+  check_tune_settings(nominal, s);
   // Every rank runs this same search on the same points (tune_batch.hpp): the same draws from
   // the same stream, the same decisions; only the evaluation of a batch is split.
   const std::filesystem::path scratch = s.scratch / ("rank" + std::to_string(s.world.rank));
@@ -196,42 +229,21 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
   };
   TuneResult r;
   campaign::Rng rng(campaign::run_seed(s.seed, 0));
-  const auto append = [&](std::vector<TunePoint> batch, const char* phase) {
-    bool improved = false;
-    for (TunePoint& p : batch) {
-      p.index = static_cast<long>(r.points.size());
-      p.phase = phase;
-      if (faster(p, r.best, r.points)) {
-        r.best = r.points.size();
-        improved = true;
-      }
-      r.points.push_back(std::move(p));
-    }
-    return improved;
-  };
   // The scenario as given (its own gains), for comparison; not a search point.
-  {
-    std::vector<TunePoint> own = evaluate({}, {std::vector<double>{}});
-    r.nominal = std::move(own.front());
-    r.nominal.phase = "nominal";
-    for (const TuneParameter& p : s.parameters) {
-      r.nominal.values.push_back(scenario::number_at(nominal, p.key).value_or(std::nan("")));
-    }
+  r.nominal = std::move(evaluate({}, {std::vector<double>{}}).front());
+  r.nominal.phase = "nominal";
+  for (const TuneParameter& p : s.parameters) {
+    r.nominal.values.push_back(scenario::number_at(nominal, p.key).value_or(std::nan("")));
   }
   const long samples = std::max(1L, s.budget / 2);
-  append(evaluate(s.parameters, latin_hypercube(s.parameters, samples, rng)), "sample");
+  append_points(r, evaluate(s.parameters, latin_hypercube(s.parameters, samples, rng)), "sample");
   double radius = 0.25;
   const long batch_size = s.batch;  // not the worker count: the same points whatever N and T
   while (static_cast<long>(r.points.size()) < s.budget) {
     const long n = std::min(batch_size, s.budget - static_cast<long>(r.points.size()));
-    std::vector<std::vector<double>> batch;
-    if (r.best) {
-      for (long i = 0; i < n; ++i) batch.push_back(perturb(s.parameters, r.points[*r.best].values, radius, rng));
-    } else {
-      batch = latin_hypercube(s.parameters, n, rng);  // nothing admissible yet: keep exploring
-    }
-    const bool improved = append(evaluate(s.parameters, batch),
-                                 r.best ? "refine" : "sample");
+    const char* phase = r.best ? "refine" : "sample";
+    const std::vector<std::vector<double>> batch = next_candidates(s, r, n, radius, rng);
+    const bool improved = append_points(r, evaluate(s.parameters, batch), phase);
     // Shrink the neighbourhood after a batch without progress; once it is tiny, restart it
     // wide around the best (escapes a narrow valley without losing the best point).
     if (!improved) radius *= 0.7;

@@ -20,6 +20,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/csv_reader.hpp"
 #include "attiguard/io/json_reader.hpp"
+#include "attiguard/io/json_values.hpp"
 #include "attiguard/io/partial_file.hpp"
 
 namespace attiguard::app {
@@ -165,11 +166,7 @@ std::string script_safe(std::string_view text) {
 }
 
 /// A series of numbers for the page (9 significant digits, null for NaN).
-json numbers(const std::vector<double>& v) {
-  json out = json::array();
-  for (double x : v) out.push_back(rounded(x));
-  return out;
-}
+json numbers(const std::vector<double>& v) { return io::json_array(v, rounded); }
 
 /// The envelopes of retained.h5 (campaign::envelope) and the worst runs' series.
 json envelopes_json(const fs::path& path) {

@@ -22,42 +22,84 @@ double percentile(const std::vector<double>& sorted, double p) {
   return sorted[std::min(i, sorted.size() - 1)];
 }
 
-nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string>& header,
-                         const std::map<long, std::string>& rows) {
-  const auto col = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
-  };
-  const std::size_t status_col = col("status");
-  const std::size_t reason_col = col("reason");
-  const std::size_t violation_col = col("violation");
-  const std::size_t outcome_col = col("outcome");  // header.size() when the kind has none
+namespace {
+
+/// The counts of the rows of runs.csv and the values of their figures, column by column.
+struct RowTally {
   long ok = 0, rejected = 0, failed = 0, violations = 0;
-  std::vector<std::vector<double>> values(header.size());
-  nlohmann::json listed = nlohmann::json::array();
-  nlohmann::json violating = nlohmann::json::array();
+  std::vector<std::vector<double>> values;  ///< per header column: the non-empty figures of ok rows
+  nlohmann::json listed = nlohmann::json::array();     ///< failed or rejected runs (kMaxListed)
+  nlohmann::json violating = nlohmann::json::array();  ///< runs with a violation (kMaxListed)
   std::map<std::string, long> outcomes;
+};
+
+/// The columns aggregate() reads; `outcome` is header.size() when the kind has none.
+struct Columns {
+  std::size_t status, reason, violation, outcome, count;
+  explicit Columns(const std::vector<std::string>& header) : count(header.size()) {
+    const auto col = [&](const std::string& name) {
+      return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    status = col("status");
+    reason = col("reason");
+    violation = col("violation");
+    outcome = col("outcome");
+  }
+};
+
+/// Counts every row of `rows` whose field count matches the header.
+RowTally tally_rows(const Columns& cols, const std::map<long, std::string>& rows) {
+  RowTally t;
+  t.values.resize(cols.count);
   for (const auto& [index, line] : rows) {
     const std::vector<std::string> f = csv_split(line);
-    if (f.size() != header.size()) continue;
-    const std::string& status = f[status_col];
+    if (f.size() != cols.count) continue;
+    const std::string& status = f[cols.status];
     if (status == "ok") {
-      ++ok;
-      if (outcome_col < header.size()) ++outcomes[f[outcome_col]];
-      if (f[violation_col] == "1") {
-        ++violations;
-        if (violating.size() < kMaxListed) violating.push_back(index);
+      ++t.ok;
+      if (cols.outcome < cols.count) ++t.outcomes[f[cols.outcome]];
+      if (f[cols.violation] == "1") {
+        ++t.violations;
+        if (t.violating.size() < kMaxListed) t.violating.push_back(index);
       }
-      for (std::size_t i = violation_col + 1; i < header.size(); ++i) {
+      for (std::size_t i = cols.violation + 1; i < cols.count; ++i) {
         if (f[i].empty()) continue;
-        values[i].push_back(std::strtod(f[i].c_str(), nullptr));
+        t.values[i].push_back(std::strtod(f[i].c_str(), nullptr));
       }
     } else {
-      (status == "rejected" ? rejected : failed) += 1;
-      if (listed.size() < kMaxListed) {
-        listed.push_back({{"run", index}, {"status", status}, {"reason", f[reason_col]}});
+      (status == "rejected" ? t.rejected : t.failed) += 1;
+      if (t.listed.size() < kMaxListed) {
+        t.listed.push_back({{"run", index}, {"status", status}, {"reason", f[cols.reason]}});
       }
     }
   }
+  return t;
+}
+
+/// The statistics of one figure's values (unsorted, non-empty). `count`: the runs the
+/// statistics are over (a figure that is null in a run, e.g. the convergence time of a run that
+/// did not converge, is left out of them).
+nlohmann::json figure_statistics(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  return {{"count", static_cast<long>(v.size())},
+          {"min", v.front()},
+          {"p1", percentile(v, 1)},
+          {"p5", percentile(v, 5)},
+          {"p50", percentile(v, 50)},
+          {"p95", percentile(v, 95)},
+          {"p99", percentile(v, 99)},
+          {"max", v.back()},
+          {"mean", sum / static_cast<double>(v.size())}};
+}
+
+}  // namespace
+
+nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string>& header,
+                         const std::map<long, std::string>& rows) {
+  const Columns cols(header);
+  const RowTally t = tally_rows(cols, rows);
   nlohmann::json j;
   j["scenario"] = info.scenario;
   j["kind"] = info.kind;
@@ -66,35 +108,20 @@ nlohmann::json aggregate(const CampaignInfo& info, const std::vector<std::string
   j["runs_completed"] = static_cast<long>(rows.size());
   j["max_attempts"] = info.max_attempts;
   j["dispersed"] = info.dispersed;
-  j["ok"] = ok;
-  j["rejected"] = rejected;
-  j["failures"] = failed;
-  j["violations"] = violations;
-  j["violating_runs"] = violating;
-  if (outcome_col < header.size()) {
+  j["ok"] = t.ok;
+  j["rejected"] = t.rejected;
+  j["failures"] = t.failed;
+  j["violations"] = t.violations;
+  j["violating_runs"] = t.violating;
+  if (cols.outcome < cols.count) {
     nlohmann::json counts = nlohmann::json::object();
-    for (const auto& [name, n] : outcomes) counts[name.empty() ? "unknown" : name] = n;
+    for (const auto& [name, n] : t.outcomes) counts[name.empty() ? "unknown" : name] = n;
     j["outcomes"] = counts;
   }
-  j["failed_or_rejected_runs"] = listed;
+  j["failed_or_rejected_runs"] = t.listed;
   nlohmann::json pct = nlohmann::json::object();
-  for (std::size_t i = violation_col + 1; i < header.size(); ++i) {
-    std::vector<double> v = values[i];
-    if (v.empty()) continue;
-    std::sort(v.begin(), v.end());
-    double sum = 0.0;
-    for (double x : v) sum += x;
-    // `count`: the runs the statistics are over (a figure that is null in a run, e.g. the
-    // convergence time of a run that did not converge, is left out of them).
-    pct[header[i]] = {{"count", static_cast<long>(v.size())},
-                      {"min", v.front()},
-                      {"p1", percentile(v, 1)},
-                      {"p5", percentile(v, 5)},
-                      {"p50", percentile(v, 50)},
-                      {"p95", percentile(v, 95)},
-                      {"p99", percentile(v, 99)},
-                      {"max", v.back()},
-                      {"mean", sum / static_cast<double>(v.size())}};
+  for (std::size_t i = cols.violation + 1; i < cols.count; ++i) {
+    if (!t.values[i].empty()) pct[header[i]] = figure_statistics(t.values[i]);
   }
   j["figures"] = pct;
   return j;

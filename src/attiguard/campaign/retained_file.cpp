@@ -83,6 +83,39 @@ std::vector<hsize_t> extent(hid_t ds) {
   return dims;
 }
 
+/// Writes /t, the sample times [s].
+void write_times(hid_t file, const std::vector<double>& times, const std::filesystem::path& path) {
+  const hsize_t s = times.size();
+  const hid_t space = H5Screate_simple(1, &s, nullptr);
+  const hid_t ds = check(H5Dcreate2(file, "/t", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create /t");
+  H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data());
+  write_attribute(ds, "units", std::string("s"));
+  H5Dclose(ds);
+  H5Sclose(space);
+}
+
+/// Creates /series/NAME for each column: float64 [runs, samples], one chunk per run, deflated,
+/// NaN where no run was written; the datasets are appended to `datasets` (left open).
+void create_series(hid_t file, const std::vector<std::string>& columns, std::size_t runs,
+                   hsize_t samples, const std::filesystem::path& path, std::vector<hid_t>& datasets) {
+  const hid_t group = check(H5Gcreate2(file, "/series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create /series");
+  const hsize_t dims[2] = {static_cast<hsize_t>(runs), samples};
+  const hsize_t chunk[2] = {1, samples > 0 ? samples : 1};
+  const hid_t space = H5Screate_simple(2, dims, nullptr);
+  const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_chunk(props, 2, chunk);
+  H5Pset_deflate(props, 4);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  H5Pset_fill_value(props, H5T_NATIVE_DOUBLE, &nan);
+  for (const auto& c : columns) {
+    datasets.push_back(check(H5Dcreate2(group, c.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, props, H5P_DEFAULT),
+                             path, "cannot create a dataset"));
+  }
+  H5Pclose(props);
+  H5Sclose(space);
+  H5Gclose(group);
+}
+
 }  // namespace
 
 RetainedFile::RetainedFile(const std::filesystem::path& path, const std::vector<std::string>& columns,
@@ -110,30 +143,8 @@ RetainedFile::RetainedFile(const std::filesystem::path& path, const std::vector<
   }
   file_ = check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create");
   const hsize_t s = times.size();
-  {
-    const hid_t space = H5Screate_simple(1, &s, nullptr);
-    const hid_t ds = check(H5Dcreate2(file_, "/t", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create /t");
-    H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data());
-    write_attribute(ds, "units", std::string("s"));
-    H5Dclose(ds);
-    H5Sclose(space);
-  }
-  const hid_t group = check(H5Gcreate2(file_, "/series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), path, "cannot create /series");
-  const hsize_t dims[2] = {static_cast<hsize_t>(runs), s};
-  const hsize_t chunk[2] = {1, s > 0 ? s : 1};
-  const hid_t space = H5Screate_simple(2, dims, nullptr);
-  const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
-  H5Pset_chunk(props, 2, chunk);
-  H5Pset_deflate(props, 4);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  H5Pset_fill_value(props, H5T_NATIVE_DOUBLE, &nan);
-  for (const auto& c : columns) {
-    datasets_.push_back(check(H5Dcreate2(group, c.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, props, H5P_DEFAULT),
-                              path, "cannot create a dataset"));
-  }
-  H5Pclose(props);
-  H5Sclose(space);
-  H5Gclose(group);
+  write_times(file_, times, path);
+  create_series(file_, columns, runs, s, path, datasets_);
   write_attribute(file_, "retain_interval", interval);
   write_attribute(file_, "runs", static_cast<double>(runs));
   write_attribute(file_, "samples", static_cast<double>(s));

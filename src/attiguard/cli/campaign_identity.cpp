@@ -1,3 +1,6 @@
+/// @file campaign_identity.cpp
+/// The SHA-256 of a scenario file and the identity of a campaign (cli/campaign_identity.hpp).
+
 #include "attiguard/cli/campaign_identity.hpp"
 
 #include <openssl/evp.h>
@@ -5,8 +8,6 @@
 #include <array>
 #include <fstream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/version.hpp"
@@ -42,62 +43,9 @@ std::string sha256_hex(const std::filesystem::path& file) {
   return hex;
 }
 
-CampaignIdentity campaign_identity(const std::filesystem::path& scenario, std::uint64_t seed,
-                                   const std::string& kind) {
+app::CampaignIdentity campaign_identity(const std::filesystem::path& scenario, std::uint64_t seed,
+                                        const std::string& kind) {
   return {sha256_hex(scenario), seed, version_string, kind};
-}
-
-void write_identity(const std::filesystem::path& file, const CampaignIdentity& id) {
-  const nlohmann::json j = {{"scenario_sha256", id.scenario_sha256},
-                            {"seed", id.seed},
-                            {"attiguard_version", id.version},
-                            {"kind", id.kind}};
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << j.dump(2) << '\n';
-    if (!out) throw InputError(tmp.string() + ": cannot write");
-  }
-  std::filesystem::rename(tmp, file);
-}
-
-void check_resume_identity(const std::filesystem::path& file, const CampaignIdentity& now,
-                           std::size_t completed_rows) {
-  if (completed_rows == 0) return;
-  const std::string where = file.string() + ": --resume: ";
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    throw InputError(where + "missing, so the " + std::to_string(completed_rows) +
-                     " rows of runs.csv beside it cannot be matched to this scenario and seed; "
-                     "start a new campaign (without --resume) or use another --out");
-  }
-  nlohmann::json j;
-  try {
-    std::stringstream text;
-    text << in.rdbuf();
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception&) {
-    throw InputError(where + "not a campaign identity (unreadable JSON)");
-  }
-  const auto field = [&](const char* key) -> std::string {
-    if (!j.contains(key)) throw InputError(where + "has no '" + key + "'");
-    return j[key].is_string() ? j[key].get<std::string>() : j[key].dump();
-  };
-  const auto differ = [&](const std::string& what, const std::string& then, const std::string& here) {
-    throw InputError(where + what + " differs: the campaign in this folder has " + then +
-                     ", this invocation " + here +
-                     "; resume with the same one or start a new campaign in another --out");
-  };
-  if (const std::string s = field("seed"); s != std::to_string(now.seed)) {
-    differ("the seed", s, std::to_string(now.seed));
-  }
-  if (const std::string s = field("scenario_sha256"); s != now.scenario_sha256) {
-    differ("the scenario file (SHA-256)", s.substr(0, 12) + "…", now.scenario_sha256.substr(0, 12) + "…");
-  }
-  if (const std::string s = field("kind"); s != now.kind) differ("the scenario kind", s, now.kind);
-  if (const std::string s = field("attiguard_version"); s != now.version) {
-    differ("the attiguard version", s, now.version);
-  }
 }
 
 }  // namespace attiguard::cli

@@ -47,4 +47,13 @@ struct PlotOutcome {
 /// than a missing interpreter or package.
 [[nodiscard]] PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& dir);
 
+/// plot_results(kind, dir), then the figures recorded in DIR/plots.txt (the next command in DIR
+/// removes them; io/output_records.hpp) and each one printed ("  PATH" on stdout): the `--plot`
+/// of a command (docs/conventions.md, "Outputs"). Returns why no plots were made, if so.
+std::optional<std::string> list_plots(const std::string& kind, const std::filesystem::path& dir);
+
+/// list_plots(kind, dir), and the warning "attiguard: warning: no plots: WHY" on stderr when
+/// none were made (the command itself still succeeds).
+void print_plots(const std::string& kind, const std::filesystem::path& dir);
+
 }  // namespace attiguard::cli

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <system_error>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -136,124 +137,131 @@ void add_limit_flags(CLI::App* cmd, attiguard::scenario::WorkLimits& limits) {
   add(WorkLimit::reach_cells, limits.reach_cells, "reach cells x steps");
 }
 
-int run(int argc, char** argv) {
-  // SIGINT and SIGTERM end every command through its failure path: exit 3, one error line, only
-  // .partial files and a status in its folder (io/interruption.hpp, app/output_folder.hpp).
-  attiguard::io::install_interruption_handlers();
-  CLI::App app{"attiguard: spacecraft attitude guidance and control with safety guarantees",
-               "attiguard"};
-  app.set_version_flag("--version", std::string("attiguard ") + attiguard::version_string);
-  app.footer(kinds_help());
-  // The subcommand requirement is checked after parsing, so that an unknown option is reported
-  // as such rather than as a missing subcommand.
-  app.require_subcommand(0, 1);
+/// The subcommands, and what their arguments are parsed into (CLI11 keeps references to these
+/// members: the object stays where it is while the arguments are parsed).
+struct Commands {
+  attiguard::cli::RunArguments run;            // cli/run_command.cpp
+  std::filesystem::path check;                 // cli/check_command.cpp
+  attiguard::cli::ReachArguments reach;        // ConReach: cli/reach_command.cpp
+  attiguard::cli::CampaignArguments campaign;  // Monte Carlo campaigns: cli/campaign_command.cpp
+  std::string campaign_seed = "1";  // parsed after: CLI11 would wrap "-1" and clamp 2^64
+  attiguard::cli::ExportAemArguments aem;      // CCSDS AEM: cli/export_aem_command.cpp
+  attiguard::cli::TuneArguments tune;          // gain search: cli/tune_command.cpp
+  long tune_budget = 64;  // flags given override the scenario's [tune] table (tune_command.hpp)
+  long tune_batch = 4;
+  std::string tune_seed = "1";
+  bool tune_no_plot = false;
+  std::filesystem::path view;                  // browser viewer: cli/view_command.cpp
+  attiguard::scenario::WorkLimits limits = attiguard::scenario::work_limits();
+  CLI::App* run_cmd{nullptr};
+  CLI::App* check_cmd{nullptr};
+  CLI::App* reach_cmd{nullptr};
+  CLI::App* campaign_cmd{nullptr};
+  CLI::App* aem_cmd{nullptr};
+  CLI::App* tune_cmd{nullptr};
+  CLI::App* view_cmd{nullptr};
+};
 
-  attiguard::cli::RunArguments run_args;
-  CLI::App* run_cmd = app.add_subcommand(
+/// The positional SCENARIO of `cmd` (required).
+void add_scenario_argument(CLI::App* cmd, std::filesystem::path& scenario, const std::string& help) {
+  cmd->add_option("SCENARIO", scenario, help)->required()->type_name("FILE");
+}
+
+/// --out DIR of `cmd` (required).
+void add_out_option(CLI::App* cmd, std::filesystem::path& out_dir) {
+  cmd->add_option("--out", out_dir, "Output directory (created if missing)")->required()->type_name("DIR");
+}
+
+/// `run` and `check`.
+void add_run_and_check(CLI::App& app, Commands& c) {
+  c.run_cmd = app.add_subcommand(
       "run", "Run a scenario; write trajectory.csv and summary.json (and plots) into DIR");
-  run_cmd->add_option("SCENARIO", run_args.scenario, "Scenario file (TOML)")
-      ->required()
-      ->type_name("FILE");
-  run_cmd->add_option("--out", run_args.out_dir, "Output directory (created if missing)")
-      ->required()
-      ->type_name("DIR");
-  run_cmd->add_flag("--plot", run_args.plot,
-                    "Also write PNG plots into DIR (needs python3-matplotlib)");
-  run_cmd->add_flag("--aem", run_args.aem, "Also write DIR/attitude.aem (CCSDS AEM, docs/interop.md)");
-  run_cmd->add_flag("--view", run_args.view, "Also write DIR/view.html (browser viewer, docs/viewer.md)");
+  add_scenario_argument(c.run_cmd, c.run.scenario, "Scenario file (TOML)");
+  add_out_option(c.run_cmd, c.run.out_dir);
+  c.run_cmd->add_flag("--plot", c.run.plot, "Also write PNG plots into DIR (needs python3-matplotlib)");
+  c.run_cmd->add_flag("--aem", c.run.aem, "Also write DIR/attitude.aem (CCSDS AEM, docs/interop.md)");
+  c.run_cmd->add_flag("--view", c.run.view, "Also write DIR/view.html (browser viewer, docs/viewer.md)");
 
-  std::filesystem::path check_path;
-  CLI::App* check_cmd =
-      app.add_subcommand("check", "Parse and validate a scenario without running it");
-  check_cmd->add_option("SCENARIO", check_path, "Scenario file (TOML)")
-      ->required()
-      ->type_name("FILE");
+  c.check_cmd = app.add_subcommand("check", "Parse and validate a scenario without running it");
+  add_scenario_argument(c.check_cmd, c.check, "Scenario file (TOML)");
+}
 
-  attiguard::cli::ReachArguments reach_args;  // ConReach: cli/reach_command.cpp
-  CLI::App* reach_cmd = app.add_subcommand(
+/// `reach`.
+void add_reach(CLI::App& app, Commands& c) {
+  c.reach_cmd = app.add_subcommand(
       "reach", "ConReach reachability and safety verification; write reach.json into DIR");
-  reach_cmd->add_option("SCENARIO", reach_args.scenario, "Scenario file (TOML, kind = \"reach\")")
-      ->required()
-      ->type_name("FILE");
-  reach_cmd->add_option("--out", reach_args.out_dir, "Output directory (created if missing)")
-      ->required()
-      ->type_name("DIR");
-  reach_cmd->add_flag("--plot", reach_args.plot, "Also write PNG plots into DIR");
-  reach_cmd->add_flag("--view", reach_args.view, "Also write DIR/view.html (docs/viewer.md)");
+  add_scenario_argument(c.reach_cmd, c.reach.scenario, "Scenario file (TOML, kind = \"reach\")");
+  add_out_option(c.reach_cmd, c.reach.out_dir);
+  c.reach_cmd->add_flag("--plot", c.reach.plot, "Also write PNG plots into DIR");
+  c.reach_cmd->add_flag("--view", c.reach.view, "Also write DIR/view.html (docs/viewer.md)");
+}
 
-  attiguard::cli::CampaignArguments campaign_args;  // Monte Carlo campaigns: cli/campaign_command.cpp
-  CLI::App* campaign_cmd = app.add_subcommand(
+/// `campaign`.
+void add_campaign(CLI::App& app, Commands& c) {
+  attiguard::cli::CampaignArguments& a = c.campaign;
+  CLI::App* cmd = c.campaign_cmd = app.add_subcommand(
       "campaign",
       "Monte Carlo campaign over the scenario's [dispersions]; write runs.csv and campaign.json "
       "into DIR (under mpirun: runs split over the ranks)");
-  campaign_cmd->add_option("SCENARIO", campaign_args.scenario, "Scenario file with [dispersions]")
-      ->required()
-      ->type_name("FILE");
-  campaign_cmd->add_option("--runs", campaign_args.runs, "Number of runs N (runs 0..N-1)")
-      ->type_name("N");
-  std::string seed_text = "1";  // parsed below: CLI11 would wrap "-1" and clamp 2^64
-  campaign_cmd->add_option("--seed", seed_text, "Campaign seed S, 0 to 2^64 - 1 (default 1)")
-      ->type_name("S");
-  campaign_cmd->add_option("--out", campaign_args.out_dir, "Output directory (created if missing)")
-      ->required()
-      ->type_name("DIR");
-  campaign_cmd->add_option("--threads", campaign_args.threads, "Worker threads per process")
-      ->type_name("T");
-  campaign_cmd->add_option("--replay", campaign_args.replay,
-                           "Re-run run K alone with its full trajectory into DIR/run_K")
+  add_scenario_argument(cmd, a.scenario, "Scenario file with [dispersions]");
+  cmd->add_option("--runs", a.runs, "Number of runs N (runs 0..N-1)")->type_name("N");
+  cmd->add_option("--seed", c.campaign_seed, "Campaign seed S, 0 to 2^64 - 1 (default 1)")->type_name("S");
+  add_out_option(cmd, a.out_dir);
+  cmd->add_option("--threads", a.threads, "Worker threads per process")->type_name("T");
+  cmd->add_option("--replay", a.replay, "Re-run run K alone with its full trajectory into DIR/run_K")
       ->type_name("K");
-  campaign_cmd->add_flag("--resume", campaign_args.resume,
-                         "Keep the runs already in DIR/runs.csv and run the others");
-  campaign_cmd->add_flag("--plot", campaign_args.plot, "Also write histograms and scatter plots");
-  campaign_cmd->add_flag("--view", campaign_args.view, "With --replay: also DIR/run_K/view.html");
-  campaign_cmd->add_flag("--aem", campaign_args.aem, "With --replay: also DIR/run_K/attitude.aem");
+  cmd->add_flag("--resume", a.resume, "Keep the runs already in DIR/runs.csv and run the others");
+  cmd->add_flag("--plot", a.plot, "Also write histograms and scatter plots");
+  cmd->add_flag("--view", a.view, "With --replay: also DIR/run_K/view.html");
+  cmd->add_flag("--aem", a.aem, "With --replay: also DIR/run_K/attitude.aem");
+}
 
-  attiguard::cli::ExportAemArguments aem_args;  // CCSDS AEM: cli/export_aem_command.cpp
-  CLI::App* aem_cmd = app.add_subcommand(
+/// `export-aem`.
+void add_export_aem(CLI::App& app, Commands& c) {
+  attiguard::cli::ExportAemArguments& a = c.aem;
+  CLI::App* cmd = c.aem_cmd = app.add_subcommand(
       "export-aem", "Write the attitude history of a run's DIR as a CCSDS AEM (docs/interop.md)");
-  aem_cmd->add_option("DIR", aem_args.dir, "Output folder of a run")->required()->type_name("DIR");
-  aem_cmd->add_option("--scenario", aem_args.scenario, "Scenario file with the [ephemeris] keys")
-      ->type_name("FILE");
-  aem_cmd->add_option("--aem-version", aem_args.version, "1.0 (default) or 2.0")->type_name("V");
-  aem_cmd->add_flag("--rates", aem_args.rates, "Angular rates as well (QUATERNION/RATE)");
-  aem_cmd->add_option("--out", aem_args.out, "Output file (default DIR/attitude.aem)")->type_name("FILE");
+  cmd->add_option("DIR", a.dir, "Output folder of a run")->required()->type_name("DIR");
+  cmd->add_option("--scenario", a.scenario, "Scenario file with the [ephemeris] keys")->type_name("FILE");
+  cmd->add_option("--aem-version", a.version, "1.0 (default) or 2.0")->type_name("V");
+  cmd->add_flag("--rates", a.rates, "Angular rates as well (QUATERNION/RATE)");
+  cmd->add_option("--out", a.out, "Output file (default DIR/attitude.aem)")->type_name("FILE");
+}
 
-  attiguard::cli::TuneArguments tune_args;  // gain search: cli/tune_command.cpp
-  CLI::App* tune_cmd = app.add_subcommand(
+/// `tune`.
+void add_tune(CLI::App& app, Commands& c) {
+  CLI::App* cmd = c.tune_cmd = app.add_subcommand(
       "tune", "Search k_p, k_d, kappa, T_s, c_Gamma of a pet_erg scenario for the fastest converged manoeuvre "
               "with every constraint kept; write tune.json and the best scenario into DIR (docs/pet-erg.md)");
-  tune_cmd->add_option("SCENARIO", tune_args.scenario, "pet_erg scenario file")->required()->type_name("FILE");
-  tune_cmd->add_option("--out", tune_args.out_dir, "Output directory (created if missing)")
-      ->required()
-      ->type_name("DIR");
-  tune_cmd->add_option("--threads", tune_args.threads, "Worker threads per process")->type_name("T");
-  long tune_budget = 64;  // flags given override the scenario's [tune] table (tune_command.hpp)
-  tune_cmd->add_option("--budget", tune_budget, "Runs in all (default: [tune] budget, else 64)")->type_name("RUNS");
-  long tune_batch = 4;
-  tune_cmd->add_option("--batch", tune_batch,
-                       "Points per refinement batch (default: [tune] batch, else 4); the search "
-                       "depends on it, not on the ranks and threads")
+  add_scenario_argument(cmd, c.tune.scenario, "pet_erg scenario file");
+  add_out_option(cmd, c.tune.out_dir);
+  cmd->add_option("--threads", c.tune.threads, "Worker threads per process")->type_name("T");
+  cmd->add_option("--budget", c.tune_budget, "Runs in all (default: [tune] budget, else 64)")->type_name("RUNS");
+  cmd->add_option("--batch", c.tune_batch,
+                  "Points per refinement batch (default: [tune] batch, else 4); the search "
+                  "depends on it, not on the ranks and threads")
       ->type_name("B");
-  std::string tune_seed_text = "1";
-  tune_cmd->add_option("--seed", tune_seed_text, "Search seed S, 0 to 2^64 - 1 (default: [tune] seed, else 1)")
+  cmd->add_option("--seed", c.tune_seed, "Search seed S, 0 to 2^64 - 1 (default: [tune] seed, else 1)")
       ->type_name("S");
-  tune_cmd->add_option("--range", tune_args.ranges,
-                       "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces [tune.ranges] and the "
-                       "default control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
+  cmd->add_option("--range", c.tune.ranges,
+                  "KEY=MIN:MAX, searched log-uniformly; repeat per key (replaces [tune.ranges] and the "
+                  "default control.kp, control.kd, erg.kappa, erg.sampling_period, erg.c_gamma ranges)")
       ->type_name("KEY=MIN:MAX");
-  bool tune_no_plot = false;
-  tune_cmd->add_flag("--no-plot", tune_no_plot, "Do not write DIR/tune_tradeoff.png (also [tune] plot = false)");
+  cmd->add_flag("--no-plot", c.tune_no_plot, "Do not write DIR/tune_tradeoff.png (also [tune] plot = false)");
+}
 
-  std::filesystem::path view_dir;  // browser viewer: cli/view_command.cpp
-  CLI::App* view_cmd = app.add_subcommand(
+/// `view`.
+void add_view(CLI::App& app, Commands& c) {
+  c.view_cmd = app.add_subcommand(
       "view", "Write DIR/view.html: a self-contained 3-D browser view of a result folder (docs/viewer.md)");
-  view_cmd->add_option("DIR", view_dir, "Output folder of run, reach or campaign")
+  c.view_cmd->add_option("DIR", c.view, "Output folder of run, reach or campaign")
       ->required()
       ->type_name("DIR");
+}
 
-  attiguard::scenario::WorkLimits limits = attiguard::scenario::work_limits();
-  for (CLI::App* cmd : {run_cmd, check_cmd, reach_cmd, campaign_cmd}) add_limit_flags(cmd, limits);
-
+/// Parses the command line into `c`; the exit code when the program ends there (--help,
+/// --version, a parse error), nothing when a command is to run.
+std::optional<int> parse_arguments(CLI::App& app, int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -273,35 +281,68 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return fail(ExitCode::invalid_input, std::string(e.what()) + " (see attiguard --help)");
   }
-  if (campaign_cmd->parsed()) campaign_args.seed = parse_seed(seed_text);
-  if (tune_cmd->parsed()) {
-    if (tune_cmd->count("--seed") > 0) tune_args.seed = parse_seed(tune_seed_text);
-    if (tune_cmd->count("--budget") > 0) tune_args.budget = tune_budget;
-    if (tune_cmd->count("--batch") > 0) tune_args.batch = tune_batch;
-    if (tune_no_plot) tune_args.plot = false;
-  }
-  attiguard::scenario::set_work_limits(limits);
+  return std::nullopt;
+}
 
-  if (run_cmd->parsed()) {
-    attiguard::cli::run_command(run_args);
-  } else if (check_cmd->parsed()) {
-    attiguard::cli::check_command(check_path);
-  } else if (reach_cmd->parsed()) {
-    attiguard::cli::reach_command(reach_args);
-  } else if (campaign_cmd->parsed()) {
-    attiguard::cli::campaign_command(campaign_args);
-  } else if (tune_cmd->parsed()) {
-    attiguard::cli::tune_command(tune_args);
-  } else if (view_cmd->parsed()) {
-    attiguard::cli::view_command(view_dir);
-  } else if (aem_cmd->parsed()) {
-    attiguard::cli::export_aem_command(aem_args);
+/// The arguments CLI11 leaves as text or defaults (the seeds, the tune flags given), and the
+/// work limits the flags raised (scenario/work_limits.hpp).
+void finish_arguments(Commands& c) {
+  if (c.campaign_cmd->parsed()) c.campaign.seed = parse_seed(c.campaign_seed);
+  if (c.tune_cmd->parsed()) {
+    if (c.tune_cmd->count("--seed") > 0) c.tune.seed = parse_seed(c.tune_seed);
+    if (c.tune_cmd->count("--budget") > 0) c.tune.budget = c.tune_budget;
+    if (c.tune_cmd->count("--batch") > 0) c.tune.batch = c.tune_batch;
+    if (c.tune_no_plot) c.tune.plot = false;
+  }
+  attiguard::scenario::set_work_limits(c.limits);
+}
+
+/// Runs the subcommand parsed; the exit code.
+int dispatch(const Commands& c) {
+  if (c.run_cmd->parsed()) {
+    attiguard::cli::run_command(c.run);
+  } else if (c.check_cmd->parsed()) {
+    attiguard::cli::check_command(c.check);
+  } else if (c.reach_cmd->parsed()) {
+    attiguard::cli::reach_command(c.reach);
+  } else if (c.campaign_cmd->parsed()) {
+    attiguard::cli::campaign_command(c.campaign);
+  } else if (c.tune_cmd->parsed()) {
+    attiguard::cli::tune_command(c.tune);
+  } else if (c.view_cmd->parsed()) {
+    attiguard::cli::view_command(c.view);
+  } else if (c.aem_cmd->parsed()) {
+    attiguard::cli::export_aem_command(c.aem);
   } else {
     return fail(ExitCode::invalid_input,
                 "a subcommand is required: run, check, reach or campaign (see attiguard --help)");
   }
   attiguard::io::throw_if_interrupted();  // a command that ended without looking (check, MPI ranks)
   return static_cast<int>(ExitCode::ok);
+}
+
+int run(int argc, char** argv) {
+  // SIGINT and SIGTERM end every command through its failure path: exit 3, one error line, only
+  // .partial files and a status in its folder (io/interruption.hpp, app/output_folder.hpp).
+  attiguard::io::install_interruption_handlers();
+  CLI::App app{"attiguard: spacecraft attitude guidance and control with safety guarantees",
+               "attiguard"};
+  app.set_version_flag("--version", std::string("attiguard ") + attiguard::version_string);
+  app.footer(kinds_help());
+  // The subcommand requirement is checked after parsing, so that an unknown option is reported
+  // as such rather than as a missing subcommand.
+  app.require_subcommand(0, 1);
+  Commands c;
+  add_run_and_check(app, c);
+  add_reach(app, c);
+  add_campaign(app, c);
+  add_export_aem(app, c);
+  add_tune(app, c);
+  add_view(app, c);
+  for (CLI::App* cmd : {c.run_cmd, c.check_cmd, c.reach_cmd, c.campaign_cmd}) add_limit_flags(cmd, c.limits);
+  if (const std::optional<int> code = parse_arguments(app, argc, argv)) return *code;
+  finish_arguments(c);
+  return dispatch(c);
 }
 
 }  // namespace

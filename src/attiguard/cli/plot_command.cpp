@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,6 +21,7 @@
 
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/process.hpp"
+#include "attiguard/io/output_records.hpp"
 
 extern char** environ;  // NOLINT: POSIX
 
@@ -133,6 +135,17 @@ PlotOutcome plot_results(const std::string& kind, const std::filesystem::path& d
     pos = end + 1;
   }
   return outcome;
+}
+
+std::optional<std::string> list_plots(const std::string& kind, const std::filesystem::path& dir) {
+  const PlotOutcome p = plot_results(kind, dir);
+  io::record_plots(dir, p.written);
+  for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
+  return p.skipped_because;
+}
+
+void print_plots(const std::string& kind, const std::filesystem::path& dir) {
+  if (const auto why = list_plots(kind, dir)) std::cerr << "attiguard: warning: no plots: " << *why << '\n';
 }
 
 }  // namespace attiguard::cli

@@ -71,6 +71,45 @@ std::vector<char*> c_strings(const std::vector<std::string>& strings) {
   return out;
 }
 
+/// Reads both pipes until each reaches its end (or a read error), appending to `out` and `err`.
+void drain_pipes(const Pipe& out_pipe, const Pipe& err_pipe, std::string& out, std::string& err) {
+  std::array<pollfd, 2> fds{pollfd{out_pipe.read_end.get(), POLLIN, 0},
+                            pollfd{err_pipe.read_end.get(), POLLIN, 0}};
+  std::array<std::string*, 2> sinks{&out, &err};
+  std::array<char, 4096> buffer{};
+  int open_streams = 2;
+  while (open_streams > 0) {
+    if (::poll(fds.data(), fds.size(), -1) < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    for (std::size_t i = 0; i < fds.size(); ++i) {
+      if (fds[i].fd < 0 || fds[i].revents == 0) continue;
+      const ssize_t n = ::read(fds[i].fd, buffer.data(), buffer.size());
+      if (n > 0) {
+        sinks[i]->append(buffer.data(), static_cast<std::size_t>(n));
+      } else if (n == 0 || errno != EINTR) {
+        fds[i].fd = -1;  // end of stream (or a read error): stop polling it
+        --open_streams;
+      }
+    }
+  }
+}
+
+/// Waits for the child `pid` and records how it ended (nothing when waitpid fails).
+void wait_child(pid_t pid, ProcessResult& result) {
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return;
+  }
+  if (WIFEXITED(status)) {
+    result.exited = true;
+    result.exit_status = WEXITSTATUS(status);
+  } else if (WIFSIGNALED(status)) {
+    result.signal = WTERMSIG(status);
+  }
+}
+
 }  // namespace
 
 ProcessResult run_process(const std::vector<std::string>& argv,
@@ -101,39 +140,8 @@ ProcessResult run_process(const std::vector<std::string>& argv,
     result.spawn_error = rc;
     return result;
   }
-
-  std::array<pollfd, 2> fds{pollfd{out_pipe.read_end.get(), POLLIN, 0},
-                            pollfd{err_pipe.read_end.get(), POLLIN, 0}};
-  std::array<std::string*, 2> sinks{&result.out, &result.err};
-  std::array<char, 4096> buffer{};
-  int open_streams = 2;
-  while (open_streams > 0) {
-    if (::poll(fds.data(), fds.size(), -1) < 0) {
-      if (errno == EINTR) continue;
-      break;
-    }
-    for (std::size_t i = 0; i < fds.size(); ++i) {
-      if (fds[i].fd < 0 || fds[i].revents == 0) continue;
-      const ssize_t n = ::read(fds[i].fd, buffer.data(), buffer.size());
-      if (n > 0) {
-        sinks[i]->append(buffer.data(), static_cast<std::size_t>(n));
-      } else if (n == 0 || errno != EINTR) {
-        fds[i].fd = -1;  // end of stream (or a read error): stop polling it
-        --open_streams;
-      }
-    }
-  }
-
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return result;
-  }
-  if (WIFEXITED(status)) {
-    result.exited = true;
-    result.exit_status = WEXITSTATUS(status);
-  } else if (WIFSIGNALED(status)) {
-    result.signal = WTERMSIG(status);
-  }
+  drain_pipes(out_pipe, err_pipe, result.out, result.err);
+  wait_child(pid, result);
   return result;
 }
 

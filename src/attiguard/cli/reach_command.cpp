@@ -95,13 +95,7 @@ void reach_command(const ReachArguments& args) {
   // (docs/conventions.md, "Outputs").
   const parallel::World world = parallel::mpi_world();
   app::OutputFolder folder(args.out_dir, app::OutputCommand::reach, world.root(), {args.scenario});
-  folder.claim();
-  folder.set_subject("reach", args.scenario.string());
-  try {
-    reach_into(args, world, folder);
-  } catch (...) {
-    folder.fail(std::current_exception());
-  }
+  app::run_in_folder(folder, "reach", args.scenario, [&] { reach_into(args, world, folder); });
 }
 
 }  // namespace attiguard::cli

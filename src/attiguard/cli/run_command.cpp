@@ -84,13 +84,7 @@ void run_command(const RunArguments& args) {
   // The folder's earlier outputs go first, even when the scenario is then refused; a failure
   // leaves .partial files and summary.json.partial (docs/conventions.md, "Outputs").
   app::OutputFolder folder(args.out_dir, app::OutputCommand::run, true, {args.scenario});
-  folder.claim();
-  folder.set_subject({}, args.scenario.string());
-  try {
-    run_into(args, folder);
-  } catch (...) {
-    folder.fail(std::current_exception());
-  }
+  app::run_in_folder(folder, {}, args.scenario, [&] { run_into(args, folder); });
 }
 
 }  // namespace attiguard::cli

@@ -5,13 +5,13 @@
 #include "attiguard/cli/tune_command.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 
 #include "attiguard/app/tune_batch.hpp"
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/tune_search.hpp"
+#include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/output_dir.hpp"
@@ -119,7 +119,7 @@ void tune_into(const TuneArguments& args, const parallel::World& world, app::Out
     j["ranks"] = world.size;
     j["threads"] = s.threads;
     j["wall_time_s"] = wall;
-    io::write_text(args.out_dir, tune_path.filename().string(), j.dump(2) + '\n');
+    io::write_json(tune_path, j);
     // The one-line outcome (docs/conventions.md, "Outcome line"), then the paths written.
     std::cout << app::tune_outcome_line(j) << '\n';
   }
@@ -133,12 +133,7 @@ void tune_into(const TuneArguments& args, const parallel::World& world, app::Out
   if (!world.root()) return;
   folder.finish();
   write_best(args, nominal, s, r, tune_path);
-  if (args.plot.value_or(table.plot.value_or(true))) {
-    const PlotOutcome p = plot_results("tune", args.out_dir);
-    io::record_plots(args.out_dir, p.written);  // the next command in DIR removes them
-    for (const auto& w : p.written) std::cout << "  " << w.string() << '\n';
-    if (p.skipped_because) std::cerr << "attiguard: warning: no plots: " << *p.skipped_because << '\n';
-  }
+  if (args.plot.value_or(table.plot.value_or(true))) print_plots("tune", args.out_dir);
   folder.finish();
 }
 
@@ -150,13 +145,7 @@ void tune_command(const TuneArguments& args) {
   // tune.json.partial (docs/conventions.md, "Outputs").
   const parallel::World world = parallel::mpi_world();
   app::OutputFolder folder(args.out_dir, app::OutputCommand::tune, world.root(), {args.scenario});
-  folder.claim();
-  folder.set_subject("pet_erg", args.scenario.string());
-  try {
-    tune_into(args, world, folder);
-  } catch (...) {
-    folder.fail(std::current_exception());
-  }
+  app::run_in_folder(folder, "pet_erg", args.scenario, [&] { tune_into(args, world, folder); });
 }
 
 }  // namespace attiguard::cli

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/json_values.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -13,14 +14,6 @@
 namespace attiguard::scenario {
 
 namespace {
-
-nlohmann::json rows_of(const lie::Mat3& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) rows.push_back({M(r, 0), M(r, 1), M(r, 2)});
-  return rows;
-}
-
-nlohmann::json vector_of(const lie::Vec3& v) { return {v(0), v(1), v(2)}; }
 
 /// Replaces every `from` in `m` by `to`.
 std::string replaced(std::string m, const std::string& from, const std::string& to) {
@@ -76,7 +69,7 @@ governor::AttitudeGovernor checked_governor(const governor::GovernorParams& para
 }
 
 lie::Mat3 checked_rotation_matrix(const lie::Mat3& R, const std::string& key, const std::string& label) {
-  const Document doc = document_from_json({{key, {{"matrix", rows_of(R)}}}}, label);
+  const Document doc = document_from_json({{key, {{"matrix", io::json_rows(R)}}}}, label);
   try {
     return TableReader(doc).rotation(key);
   } catch (const InputError& e) {  // the argument is the matrix itself: "R: …", not "R.matrix: …"
@@ -94,7 +87,7 @@ lie::Quat checked_unit_quaternion(const lie::Quat& q, const std::string& key, co
 }
 
 lie::Vec3 checked_rotation_vector(const lie::Vec3& w, const std::string& key, const std::string& label) {
-  (void)read_rotation_form({{"rotation_vector", vector_of(w)}}, key, label,
+  (void)read_rotation_form({{"rotation_vector", io::json_array(w)}}, key, label,
                            {{key + ".rotation_vector", key}});
   return w;
 }
@@ -102,20 +95,20 @@ lie::Vec3 checked_rotation_vector(const lie::Vec3& w, const std::string& key, co
 lie::Vec3 checked_axis_angle(const lie::Vec3& axis, double angle, const std::string& axis_key,
                              const std::string& angle_key, const std::string& label) {
   const std::string key = "axis_angle";
-  (void)read_rotation_form({{"axis", vector_of(axis)}, {"angle", angle}}, key, label,
+  (void)read_rotation_form({{"axis", io::json_array(axis)}, {"angle", angle}}, key, label,
                            {{key + ".axis", axis_key}, {key + ".angle", angle_key}});
   // The unit axis as the reader scales it (also for an axis whose norm underflows).
-  const Document doc = document_from_json({{axis_key, vector_of(axis)}}, label);
+  const Document doc = document_from_json({{axis_key, io::json_array(axis)}}, label);
   return TableReader(doc).direction(axis_key);
 }
 
 lie::Mat3 checked_matrix3(const lie::Mat3& M, const std::string& key, const std::string& label) {
-  const Document doc = document_from_json({{key, rows_of(M)}}, label);
+  const Document doc = document_from_json({{key, io::json_rows(M)}}, label);
   return TableReader(doc).matrix3(key);
 }
 
 lie::Vec3 checked_vector3(const lie::Vec3& v, const std::string& key, const std::string& label) {
-  const Document doc = document_from_json({{key, vector_of(v)}}, label);
+  const Document doc = document_from_json({{key, io::json_array(v)}}, label);
   return TableReader(doc).vector3(key);
 }
 

@@ -66,7 +66,102 @@ void require_sampleable_mass(const scenario::TableReader& t, const Dispersion& d
                       hint);
 }
 
-/// Reads one `[dispersions]` entry.
+bool is_number_node(const toml::node& n) { return n.is_floating_point() || n.is_integer(); }
+
+/// A value of the scenario that a number dispersion (`number`) or a vector dispersion (a
+/// non-empty array of numbers) can disperse; InputError at the entry otherwise.
+void require_dispersible(const scenario::TableReader& t, const std::string& key, DispersionType type,
+                         const toml::node& value) {
+  if (type == DispersionType::number && !is_number_node(value)) {
+    t.fail_here("'" + key + "' is not a number in the scenario");
+  }
+  if (type == DispersionType::vector) {
+    const toml::array* a = value.as_array();
+    bool ok = a != nullptr && !a->empty();
+    if (ok) {
+      for (const auto& e : *a) ok = ok && is_number_node(e);
+    }
+    if (!ok) t.fail_here("'" + key + "' is not an array of numbers in the scenario");
+  }
+}
+
+/// The bounds of a number or vector dispersion: `min` and `max`, or `delta` around the nominal
+/// value (docs/campaigns.md, "Dispersions").
+void read_bounds(const scenario::TableReader& t, Dispersion& d, const std::string& dist) {
+  const bool has_min = t.has("min");
+  const bool has_max = t.has("max");
+  const bool has_delta = t.has("delta");
+  if (has_min != has_max) t.fail_here("give both 'min' and 'max' or neither");
+  d.has_bounds = has_min;
+  if (d.has_bounds) {
+    d.min = t.number("min");
+    d.max = t.number("max");
+    if (!(d.min < d.max)) {
+      t.fail("max", "must be greater than min (min = " + detail::format_number(d.min) +
+                        ", max = " + detail::format_number(d.max) + ")");
+    }
+  }
+  if (has_delta) d.delta = t.number("delta", scenario::NumberRule::positive());
+  if (d.has_bounds && has_delta) t.fail("delta", "give either min/max or delta, not both");
+  if (d.distribution != Distribution::normal && !d.has_bounds && !has_delta) {
+    t.fail_here("a " + dist + " dispersion needs 'min' and 'max' or 'delta'");
+  }
+  if (d.distribution == Distribution::normal && (d.has_bounds || has_delta)) {
+    t.fail_here("a normal dispersion has no bounds (use truncated_normal)");
+  }
+}
+
+/// A `number` or `vector` entry: its distribution, bounds, sigma and mean, each truncated normal
+/// checked to be sampleable around every nominal value.
+void read_scalar_entry(const scenario::TableReader& t, Dispersion& d, const std::string& type,
+                       const toml::node& value) {
+  d.type = type == "number" ? DispersionType::number : DispersionType::vector;
+  require_dispersible(t, d.key, d.type, value);
+  static constexpr std::array<std::string_view, 3> kDist{"uniform", "normal", "truncated_normal"};
+  const std::string dist = t.string("distribution", kDist);
+  d.distribution = dist == "uniform"  ? Distribution::uniform
+                   : dist == "normal" ? Distribution::normal
+                                      : Distribution::truncated_normal;
+  read_bounds(t, d, dist);
+  if (d.distribution != Distribution::uniform) {
+    d.sigma = t.number("sigma", scenario::NumberRule::positive());
+    d.has_mean = t.has("mean");
+    if (d.has_mean) d.mean = t.number("mean");
+  }
+  if (d.distribution == Distribution::truncated_normal) {
+    if (d.type == DispersionType::number) {
+      require_sampleable_mass(t, d, as_double(value));
+    } else {
+      for (const auto& e : *value.as_array()) require_sampleable_mass(t, d, as_double(e));
+    }
+  }
+}
+
+/// An `attitude` entry: uniform over SO(3) or a ball of `max_angle_deg` about the nominal one.
+void read_attitude_entry(const scenario::TableReader& t, Dispersion& d, const toml::node& value) {
+  d.type = DispersionType::attitude;
+  static constexpr std::array<std::string_view, 2> kModes{"uniform", "ball"};
+  d.attitude_mode = t.string("mode", kModes) == "uniform" ? AttitudeMode::uniform
+                                                           : AttitudeMode::ball;
+  if (d.attitude_mode == AttitudeMode::ball) {
+    d.max_angle = kDeg * t.number("max_angle_deg", {0.0, 180.0, true, false});
+  }
+  if (!value.is_table()) t.fail_here("'" + d.key + "' is not a rotation table in the scenario");
+}
+
+/// A `direction` entry: a cone of `half_angle_deg` about the nominal 3-vector.
+void read_direction_entry(const scenario::TableReader& t, Dispersion& d, const toml::node& value) {
+  d.type = DispersionType::direction;
+  const toml::array* a = value.as_array();
+  bool is_vector3 = a != nullptr && a->size() == 3;
+  if (is_vector3) {
+    for (const auto& e : *a) is_vector3 = is_vector3 && is_number_node(e);
+  }
+  if (!is_vector3) t.fail_here("'" + d.key + "' is not a 3-vector in the scenario");
+  d.half_angle = kDeg * t.number("half_angle_deg", {0.0, 180.0, true, false});
+}
+
+/// Reads one `[dispersions]` entry (docs/campaigns.md, "Dispersions").
 Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
                       const scenario::Document& nominal) {
   Dispersion d;
@@ -77,85 +172,17 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
   const auto pos = resolve_key_path(root_table(nominal), key);
   if (!pos) t.fail_here("no value at key path '" + key + "' in the scenario");
   const toml::node& value = *pos;
-  auto is_number = [](const toml::node& n) { return n.is_floating_point() || n.is_integer(); };
-  auto is_vector3 = [&](const toml::node& n) {
-    const toml::array* a = n.as_array();
-    if (a == nullptr || a->size() != 3) return false;
-    for (const auto& e : *a) {
-      if (!is_number(e)) return false;
-    }
-    return true;
-  };
   if (type == "number" || type == "vector") {
-    d.type = type == "number" ? DispersionType::number : DispersionType::vector;
-    if (d.type == DispersionType::number && !is_number(value)) {
-      t.fail_here("'" + key + "' is not a number in the scenario");
-    }
-    if (d.type == DispersionType::vector) {
-      const toml::array* a = value.as_array();
-      bool ok = a != nullptr && !a->empty();
-      if (ok) {
-        for (const auto& e : *a) ok = ok && is_number(e);
-      }
-      if (!ok) t.fail_here("'" + key + "' is not an array of numbers in the scenario");
-    }
-    static constexpr std::array<std::string_view, 3> kDist{"uniform", "normal",
-                                                           "truncated_normal"};
-    const std::string dist = t.string("distribution", kDist);
-    d.distribution = dist == "uniform"  ? Distribution::uniform
-                     : dist == "normal" ? Distribution::normal
-                                        : Distribution::truncated_normal;
-    const bool has_min = t.has("min");
-    const bool has_max = t.has("max");
-    const bool has_delta = t.has("delta");
-    if (has_min != has_max) t.fail_here("give both 'min' and 'max' or neither");
-    d.has_bounds = has_min;
-    if (d.has_bounds) {
-      d.min = t.number("min");
-      d.max = t.number("max");
-      if (!(d.min < d.max)) {
-        t.fail("max", "must be greater than min (min = " + detail::format_number(d.min) +
-                          ", max = " + detail::format_number(d.max) + ")");
-      }
-    }
-    if (has_delta) d.delta = t.number("delta", scenario::NumberRule::positive());
-    if (d.has_bounds && has_delta) t.fail("delta", "give either min/max or delta, not both");
-    if (d.distribution != Distribution::normal && !d.has_bounds && !has_delta) {
-      t.fail_here("a " + dist + " dispersion needs 'min' and 'max' or 'delta'");
-    }
-    if (d.distribution == Distribution::normal && (d.has_bounds || has_delta)) {
-      t.fail_here("a normal dispersion has no bounds (use truncated_normal)");
-    }
-    if (d.distribution != Distribution::uniform) {
-      d.sigma = t.number("sigma", scenario::NumberRule::positive());
-      d.has_mean = t.has("mean");
-      if (d.has_mean) d.mean = t.number("mean");
-    }
-    if (d.distribution == Distribution::truncated_normal) {
-      if (d.type == DispersionType::number) {
-        require_sampleable_mass(t, d, as_double(value));
-      } else {
-        for (const auto& e : *value.as_array()) require_sampleable_mass(t, d, as_double(e));
-      }
-    }
+    read_scalar_entry(t, d, type, value);
   } else if (type == "inertia") {
     d.type = DispersionType::inertia;
     d.moments_rel_sigma = t.number_or("moments_rel_sigma", 0.0, scenario::NumberRule::range(0.0, 0.3));
     d.axes_max_angle = kDeg * t.number_or("axes_max_angle_deg", 0.0,
                                           scenario::NumberRule::range(0.0, 180.0));
   } else if (type == "attitude") {
-    d.type = DispersionType::attitude;
-    static constexpr std::array<std::string_view, 2> kModes{"uniform", "ball"};
-    d.attitude_mode = t.string("mode", kModes) == "uniform" ? AttitudeMode::uniform
-                                                             : AttitudeMode::ball;
-    if (d.attitude_mode == AttitudeMode::ball) {
-      d.max_angle = kDeg * t.number("max_angle_deg", {0.0, 180.0, true, false});
-    }
-    if (!value.is_table()) t.fail_here("'" + key + "' is not a rotation table in the scenario");
+    read_attitude_entry(t, d, value);
   } else {
-    d.type = DispersionType::direction;
-    if (!is_vector3(value)) t.fail_here("'" + key + "' is not a 3-vector in the scenario");
-    d.half_angle = kDeg * t.number("half_angle_deg", {0.0, 180.0, true, false});
+    read_direction_entry(t, d, value);
   }
   return d;
 }
@@ -314,6 +341,92 @@ std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
   return cols;
 }
 
+namespace {
+
+/// A `number` draw (draw_scalar) at its key; its value in `values`.
+void apply_number(const Dispersion& d, const toml::node& nom, campaign::Rng& rng, toml::table& root,
+                  std::vector<double>& values) {
+  const double x = draw_scalar(d, as_double(nom), rng);
+  values.push_back(x);
+  assign_key_path(root, d.key, toml::value<double>(x));
+}
+
+/// A `vector` draw, element by element; the first three values in `values` (0 for missing ones).
+void apply_vector(const Dispersion& d, const toml::node& nom, campaign::Rng& rng, toml::table& root,
+                  std::vector<double>& values) {
+  toml::array out;
+  const toml::array& a = *nom.as_array();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double x = draw_scalar(d, as_double(*a.get(i)), rng);
+    if (i < 3) values.push_back(x);
+    out.push_back(x);
+  }
+  for (std::size_t i = a.size(); i < 3; ++i) values.push_back(0.0);
+  assign_key_path(root, d.key, std::move(out));
+}
+
+/// An `inertia` draw: principal moments scaled by 1 + σ_rel g (g a standard normal truncated at
+/// 3), principal axes turned within axes_max_angle, redrawn until the matrix is a valid inertia
+/// (dynamics::inertia_error); J11 J22 J33 J12 J13 J23 in `values`.
+void apply_inertia(const Dispersion& d, const scenario::Document& nominal, const toml::node& nom,
+                   campaign::Rng& rng, toml::table& root, std::vector<double>& values) {
+  const scenario::Document h = holder_of(nominal, nom);
+  const Mat3 J0 = single_value_reader(h).inertia("value");
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(J0);
+  Mat3 J = J0;
+  for (int attempt = 0; attempt < 10000; ++attempt) {
+    Vec3 m = eig.eigenvalues();
+    for (int i = 0; i < 3; ++i) {
+      double g = rng.normal();
+      while (std::abs(g) > 3.0) g = rng.normal();
+      m(i) *= 1.0 + d.moments_rel_sigma * g;
+    }
+    Mat3 Q = eig.eigenvectors();
+    if (d.axes_max_angle > 0.0) Q = Q * lie::exp(ball_rotation(d.axes_max_angle, rng));
+    J = Q * m.asDiagonal() * Q.transpose();
+    J = 0.5 * (J + J.transpose());
+    if (!dynamics::inertia_error(J)) break;
+  }
+  values.insert(values.end(), {J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2)});
+  toml::array rows;
+  for (int r = 0; r < 3; ++r) rows.push_back(array3(J.row(r).transpose()));
+  assign_key_path(root, d.key, std::move(rows));
+}
+
+/// An `attitude` draw: uniform on SO(3) or within a geodesic ball about the nominal attitude;
+/// its unit quaternion in `values` and at the key.
+void apply_attitude(const Dispersion& d, const scenario::Document& nominal, const toml::node& nom,
+                    campaign::Rng& rng, toml::table& root, std::vector<double>& values) {
+  const scenario::Document h = holder_of(nominal, nom);
+  const Mat3 R0 = single_value_reader(h).rotation("value");
+  Mat3 R;
+  if (d.attitude_mode == AttitudeMode::uniform) {
+    Eigen::Vector4d q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
+    q.normalize();
+    R = lie::quat_to_rotation(q);
+  } else {
+    R = R0 * lie::exp(ball_rotation(d.max_angle, rng));
+  }
+  lie::Quat q = lie::rotation_to_quat(R);
+  q.normalize();
+  values.insert(values.end(), {q(0), q(1), q(2), q(3)});
+  toml::table t;
+  t.insert("quaternion", toml::array{q(0), q(1), q(2), q(3)});
+  assign_key_path(root, d.key, std::move(t));
+}
+
+/// A `direction` draw: a unit vector in the cone of half_angle about the nominal direction.
+void apply_direction(const Dispersion& d, const toml::node& nom, campaign::Rng& rng, toml::table& root,
+                     std::vector<double>& values) {
+  const toml::array& a = *nom.as_array();
+  const Vec3 n0 = Vec3(as_double(*a.get(0)), as_double(*a.get(1)), as_double(*a.get(2)));
+  const Vec3 n = cap_vector(n0.normalized(), d.half_angle, rng);
+  values.insert(values.end(), {n(0), n(1), n(2)});
+  assign_key_path(root, d.key, array3(n));
+}
+
+}  // namespace
+
 void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
                        Document& out, std::vector<double>& values) {
   toml::table& root = root_table(out);
@@ -321,75 +434,21 @@ void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nom
     const toml::node* nom = resolve_key_path(root_table(nominal), d.key);
     if (nom == nullptr) throw InputError(nominal.path.string() + ": no value at '" + d.key + "'");
     switch (d.type) {
-      case DispersionType::number: {
-        const double x = draw_scalar(d, as_double(*nom), rng);
-        values.push_back(x);
-        assign_key_path(root, d.key, toml::value<double>(x));
+      case DispersionType::number:
+        apply_number(d, *nom, rng, root, values);
         break;
-      }
-      case DispersionType::vector: {
-        toml::array out;
-        const toml::array& a = *nom->as_array();
-        for (std::size_t i = 0; i < a.size(); ++i) {
-          const double x = draw_scalar(d, as_double(*a.get(i)), rng);
-          if (i < 3) values.push_back(x);
-          out.push_back(x);
-        }
-        for (std::size_t i = a.size(); i < 3; ++i) values.push_back(0.0);
-        assign_key_path(root, d.key, std::move(out));
+      case DispersionType::vector:
+        apply_vector(d, *nom, rng, root, values);
         break;
-      }
-      case DispersionType::inertia: {
-        const scenario::Document h = holder_of(nominal, *nom);
-        const Mat3 J0 = single_value_reader(h).inertia("value");
-        const Eigen::SelfAdjointEigenSolver<Mat3> eig(J0);
-        Mat3 J = J0;
-        for (int attempt = 0; attempt < 10000; ++attempt) {
-          Vec3 m = eig.eigenvalues();
-          for (int i = 0; i < 3; ++i) {
-            double g = rng.normal();
-            while (std::abs(g) > 3.0) g = rng.normal();
-            m(i) *= 1.0 + d.moments_rel_sigma * g;
-          }
-          Mat3 Q = eig.eigenvectors();
-          if (d.axes_max_angle > 0.0) Q = Q * lie::exp(ball_rotation(d.axes_max_angle, rng));
-          J = Q * m.asDiagonal() * Q.transpose();
-          J = 0.5 * (J + J.transpose());
-          if (!dynamics::inertia_error(J)) break;
-        }
-        values.insert(values.end(), {J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2)});
-        toml::array rows;
-        for (int r = 0; r < 3; ++r) rows.push_back(array3(J.row(r).transpose()));
-        assign_key_path(root, d.key, std::move(rows));
+      case DispersionType::inertia:
+        apply_inertia(d, nominal, *nom, rng, root, values);
         break;
-      }
-      case DispersionType::attitude: {
-        const scenario::Document h = holder_of(nominal, *nom);
-        const Mat3 R0 = single_value_reader(h).rotation("value");
-        Mat3 R;
-        if (d.attitude_mode == AttitudeMode::uniform) {
-          Eigen::Vector4d q(rng.normal(), rng.normal(), rng.normal(), rng.normal());
-          q.normalize();
-          R = lie::quat_to_rotation(q);
-        } else {
-          R = R0 * lie::exp(ball_rotation(d.max_angle, rng));
-        }
-        lie::Quat q = lie::rotation_to_quat(R);
-        q.normalize();
-        values.insert(values.end(), {q(0), q(1), q(2), q(3)});
-        toml::table t;
-        t.insert("quaternion", toml::array{q(0), q(1), q(2), q(3)});
-        assign_key_path(root, d.key, std::move(t));
+      case DispersionType::attitude:
+        apply_attitude(d, nominal, *nom, rng, root, values);
         break;
-      }
-      case DispersionType::direction: {
-        const toml::array& a = *nom->as_array();
-        const Vec3 n0 = Vec3(as_double(*a.get(0)), as_double(*a.get(1)), as_double(*a.get(2)));
-        const Vec3 n = cap_vector(n0.normalized(), d.half_angle, rng);
-        values.insert(values.end(), {n(0), n(1), n(2)});
-        assign_key_path(root, d.key, array3(n));
+      case DispersionType::direction:
+        apply_direction(d, *nom, rng, root, values);
         break;
-      }
     }
   }
 }

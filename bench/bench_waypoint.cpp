@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
@@ -46,7 +46,7 @@ void BM_WaypointGuidanceStep(benchmark::State& state) {
   // thrust law, PID (27)) at a state with lateral velocity.
   const std::vector<lie::Vec3> wps{lie::Vec3(40000.0, 0.0, 0.0)};
   guidance::MissionParams params;
-  guidance::Mission mission(params, {20.0, 2.0, 20.0}, wps);
+  guidance::WaypointSequencer mission(params, {20.0, 2.0, 20.0}, wps);
   guidance::MissionInputs in;
   in.v_i = lie::Vec3(50.0, 0.3, -0.2);
   in.p_i = lie::Vec3(30000.0, 5.0, 1.0);

@@ -13,7 +13,7 @@
 #include "attiguard/control/quaternion_pid.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/argument_checks.hpp"
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -25,11 +25,11 @@ using lie::Mat3;
 using lie::Quat;
 using lie::Vec3;
 
-/// A Mission together with the waypoint storage it points into (mission.hpp: the span must
-/// outlive the mission).
+/// A guidance::WaypointSequencer together with the waypoint storage it points into
+/// (waypoint_sequencer.hpp: the span must outlive the sequencer).
 struct OwnedMission {
   std::vector<Vec3> waypoints;
-  std::unique_ptr<guidance::Mission> mission;
+  std::unique_ptr<guidance::WaypointSequencer> mission;
 };
 
 std::unique_ptr<OwnedMission> make_mission(const std::vector<Vec3>& waypoints, double mass,
@@ -70,7 +70,7 @@ std::unique_ptr<OwnedMission> make_mission(const std::vector<Vec3>& waypoints, d
   g.kp = kp;
   g.ki = ki;
   g.kd = kd;
-  owned->mission = std::make_unique<guidance::Mission>(p, g, owned->waypoints);
+  owned->mission = std::make_unique<guidance::WaypointSequencer>(p, g, owned->waypoints);
   return owned;
 }
 

@@ -1,8 +1,8 @@
 // The flight-loop promise (docs/pet-erg.md, Sec. 5; docs/waypoint.md, "Guidance"; docs/install.md,
 // "Flight-only build"): per step, nothing allocated and nothing thrown. Enforced: 10⁴ calls each
-// of AttitudeGovernor::step, Mission::step and QuaternionPid::step in closed loop, with every
-// global operator new / delete of this executable replaced by counting versions, must not reach
-// the heap; and the three steps are declared noexcept (static_assert).
+// of AttitudeGovernor::step, WaypointSequencer::step and QuaternionPid::step in closed loop, with
+// every global operator new / delete of this executable replaced by counting versions, must not
+// reach the heap; and the three steps are declared noexcept (static_assert).
 //
 // Own executable (tests/CMakeLists.txt, attiguard_allocation_tests): the replaced operators
 // would otherwise count for the whole suite. Only the step calls are counted (a flag is raised
@@ -31,7 +31,7 @@
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/spacecraft_plant.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/lie/axis_angle.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
@@ -108,7 +108,7 @@ using lie::Vec3;
 // The three flight-loop steps promise not to throw.
 static_assert(noexcept(std::declval<governor::AttitudeGovernor&>().step(
     0.0, std::declval<const Mat3&>(), std::declval<const Vec3&>(), std::declval<const Mat3&>())));
-static_assert(noexcept(std::declval<guidance::Mission&>().step(
+static_assert(noexcept(std::declval<guidance::WaypointSequencer&>().step(
     std::declval<const guidance::MissionInputs&>())));
 static_assert(noexcept(std::declval<control::QuaternionPid&>().step(
     std::declval<const Quat&>(), std::declval<const Vec3&>(), std::declval<const Quat&>(),
@@ -404,7 +404,7 @@ TEST(AllocationFree, MissionStepOverTwoWaypoints) {
   p.brake_speed = guidance::default_brake_speed(p);
   const control::QuaternionPidGains gains{20.0, 2.0, 20.0, 0.05};
   const std::array waypoints_i{Vec3(200.0, 0.0, 0.0), Vec3(200.0, 200.0, 0.0)};
-  guidance::Mission mission(p, gains, waypoints_i);
+  guidance::WaypointSequencer mission(p, gains, waypoints_i);
   const dynamics::SpacecraftPlant plant(p.mass, 20.0 * Mat3::Identity());
 
   guidance::MissionInputs in;
@@ -417,7 +417,7 @@ TEST(AllocationFree, MissionStepOverTwoWaypoints) {
     fly(plant, cmd, in);
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
-                                     << " calls of Mission::step";
+                                     << " calls of WaypointSequencer::step";
   std::string visited;
   for (const guidance::Mode m : modes) {
     visited += std::string(" ") + guidance::mode_name(m);
@@ -453,7 +453,7 @@ TEST(AllocationFree, MissionStepBrakingALateralAndRecedingStartWithShapedGains) 
   gains.shaping = J / 24.0;
   gains.shaping_scale = 24.0;
   const std::array waypoints_i{Vec3(200.0, 0.0, 0.0), Vec3(200.0, 200.0, 0.0)};
-  guidance::Mission mission(p, gains, waypoints_i);
+  guidance::WaypointSequencer mission(p, gains, waypoints_i);
   const dynamics::SpacecraftPlant plant(p.mass, J);
 
   guidance::MissionInputs in;
@@ -469,7 +469,7 @@ TEST(AllocationFree, MissionStepBrakingALateralAndRecedingStartWithShapedGains) 
     fly(plant, cmd, in);
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
-                                     << " calls of Mission::step";
+                                     << " calls of WaypointSequencer::step";
   std::string visited;
   for (const guidance::TransitionReason r : reasons) visited += std::string(" ") + guidance::reason_name(r);
   EXPECT_EQ(modes.count(guidance::Mode::brake), 1U) << "reasons:" << visited;

@@ -104,7 +104,7 @@ void record_transition(WaypointSimResult& res, double t, int wp_before,
 /// The end of the run: the errors of the waypoints not reached, and the guidance's final state
 /// with the distance and closing speed to its active waypoint.
 void finish_waypoint_result(WaypointSimResult& res, const WaypointScenario& sc,
-                            const guidance::Mission& mission, const SpacecraftState& y) {
+                            const guidance::WaypointSequencer& mission, const SpacecraftState& y) {
   for (WaypointResult& w : res.waypoints) {
     if (!w.reached) {
       w.final_position_error =
@@ -130,7 +130,7 @@ WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
                                     const CommandFilter& filter) {
   const dynamics::SpacecraftPlant plant(sc.mission.mass, sc.J, sc.max_wheel_torque,
                                         sc.main_thrust_axis_b);
-  guidance::Mission mission(sc.mission, sc.gains, sc.waypoints_i);
+  guidance::WaypointSequencer mission(sc.mission, sc.gains, sc.waypoints_i);
   WaypointSimResult res = waypoint_result_for(static_cast<int>(sc.waypoints_i.size()));
   SpacecraftState y = waypoint_initial_state(sc);
   const std::vector<double> stops = waypoint_sample_times(sc);

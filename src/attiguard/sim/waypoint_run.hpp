@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/dynamics/spacecraft_plant.hpp"
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/sim/waypoint_scenario.hpp"
 

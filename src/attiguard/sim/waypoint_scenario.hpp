@@ -10,7 +10,7 @@
 
 #include "attiguard/control/quaternion_pid.hpp"
 #include "attiguard/core/name_table.hpp"
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 
 namespace attiguard::sim {

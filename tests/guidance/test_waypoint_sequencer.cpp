@@ -1,4 +1,4 @@
-// Mission state machine: feed-forward along simulated legs, singular configurations, and a sweep
+// Waypoint sequencer (guidance::WaypointSequencer): feed-forward along simulated legs, singular configurations, and a sweep
 // of random initial states and waypoint lists.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/waypoint_scenario.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
@@ -83,7 +83,7 @@ FdStats check_feedforward(const sim::WaypointScenario& sc, bool antiparallel) {
   return st;
 }
 
-TEST(MissionFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDrift) {
+TEST(WaypointSequencerFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDrift) {
   sim::WaypointScenario sc = short_leg_scenario();
   sc.v0_i = Vec3(0.0, 1.5, -1.0);  // lateral drift: the error direction turns during the leg
   sc.waypoints_i = {Vec3(3000.0, 0.0, 0.0)};
@@ -94,7 +94,7 @@ TEST(MissionFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDr
   std::printf("feed-forward: %d samples, worst relative error %.3g\n", st.checked, st.worst_rel);
 }
 
-TEST(MissionFeedForward, MatchesFiniteDifferencesOnALegAntiparallelToTheBodyAxis) {
+TEST(WaypointSequencerFeedForward, MatchesFiniteDifferencesOnALegAntiparallelToTheBodyAxis) {
   // The waypoint lies along −x_b and −x_i: the paper's chart (inertial x) has ϑ = π exactly
   // (k of (11) undefined); the reversed vector of the deceleration is again antiparallel.
   sim::WaypointScenario sc = short_leg_scenario();
@@ -107,7 +107,7 @@ TEST(MissionFeedForward, MatchesFiniteDifferencesOnALegAntiparallelToTheBodyAxis
               st.worst_rel);
 }
 
-TEST(MissionStateMachine, EveryLegRunsTheModesInOrder) {
+TEST(WaypointSequencerStateMachine, EveryLegRunsTheModesInOrder) {
   sim::WaypointScenario sc = short_leg_scenario();
   sc.waypoints_i = {Vec3(2000.0, 0.0, 0.0), Vec3(2000.0, 2000.0, 0.0)};
   sc.duration = 2000.0;
@@ -125,7 +125,7 @@ TEST(MissionStateMachine, EveryLegRunsTheModesInOrder) {
   EXPECT_EQ(res.transitions.back().to, Mode::done);
 }
 
-TEST(MissionSweep, NoNanForRandomInitialStatesAndWaypointLists) {
+TEST(WaypointSequencerSweep, NoNanForRandomInitialStatesAndWaypointLists) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto& g = test::rng();
   int completed = 0;
@@ -219,7 +219,7 @@ bool continuous_entry(Mode m) {
 
 }  // namespace geometry
 
-TEST(MissionGeometry, DesiredAttitudeAndRateFiniteAndContinuousInEveryGeometry) {
+TEST(WaypointSequencerGeometry, DesiredAttitudeAndRateFiniteAndContinuousInEveryGeometry) {
   struct Case {
     const char* name;
     const char* velocity;

@@ -1,6 +1,6 @@
 #pragma once
-/// @file mission.hpp
-/// Waypoint mission as an explicit state machine — the "future work" of the waypoint paper
+/// @file waypoint_sequencer.hpp
+/// The waypoint sequencer: the waypoint mission as an explicit state machine — the "future work" of the waypoint paper
 /// (Conclusion) built from its Algorithm 1:
 ///
 ///   align → accelerate → coast → flip → decelerate → fine → (next waypoint: align | done)
@@ -20,7 +20,7 @@
 
 namespace attiguard::guidance {
 
-/// Mission modes (their integer values are the `mode` column of trajectory.csv).
+/// Waypoint sequencer modes (their integer values are the `mode` column of trajectory.csv).
 enum class Mode : int {
   align = 0,       ///< point x_b at the waypoint, T = 0, until ‖ε_{d,b}‖ < pointing tolerance
   accelerate = 1,  ///< T from (13) while pointing within tolerance
@@ -149,14 +149,15 @@ struct MissionCommand {
   GuidanceFrameSpec spec{};  ///< frame of this sample (chart, sign, projection) for checks
 };
 
-/// The mission state machine with its attitude PID. Not copyable across waypoint storage: the
-/// waypoint span must outlive the mission.
-class Mission {
+/// The waypoint state machine (waypoint paper, Algorithm 1; docs/waypoint.md, "State machine")
+/// with its attitude PID; formerly guidance::Mission (not the kind `mission`, sim/mission_run).
+/// Not copyable across waypoint storage: the waypoint span must outlive the sequencer.
+class WaypointSequencer {
  public:
-  /// Mission over `waypoints_i` (the array P_wp of the waypoint paper, Sec. VI) with the PID
+  /// Sequencer over `waypoints_i` (the array P_wp of the waypoint paper, Sec. VI) with the PID
   /// gains of (27); the first leg starts at the first step().
-  Mission(const MissionParams& params, const control::QuaternionPidGains& gains,
-          std::span<const Vec3> waypoints_i) noexcept;
+  WaypointSequencer(const MissionParams& params, const control::QuaternionPidGains& gains,
+                    std::span<const Vec3> waypoints_i) noexcept;
 
   /// One control sample (Algorithm 1 body): transitions, desired attitude (23)-(24), thrust
   /// (13)/(16), RCT (28)-(30), PID (27). Noexcept, allocation-free.

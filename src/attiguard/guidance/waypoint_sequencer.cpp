@@ -1,4 +1,4 @@
-#include "attiguard/guidance/mission.hpp"
+#include "attiguard/guidance/waypoint_sequencer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -42,15 +42,16 @@ const char* reason_name(TransitionReason reason) noexcept {
   return "?";
 }
 
-Mission::Mission(const MissionParams& params, const control::QuaternionPidGains& gains,
-                 std::span<const Vec3> waypoints_i) noexcept
+WaypointSequencer::WaypointSequencer(const MissionParams& params,
+                                     const control::QuaternionPidGains& gains,
+                                     std::span<const Vec3> waypoints_i) noexcept
     : params_(params), pid_(gains), waypoints_(waypoints_i) {
   if (waypoints_.empty()) {
     mode_ = Mode::done;
   }
 }
 
-GuidanceFrameSpec Mission::frame_spec() const noexcept {
+GuidanceFrameSpec WaypointSequencer::frame_spec() const noexcept {
   GuidanceFrameSpec spec;
   spec.e_floor = params_.e_floor;
   spec.projection_params = params_.projection;
@@ -62,7 +63,7 @@ GuidanceFrameSpec Mission::frame_spec() const noexcept {
   return spec;
 }
 
-Quat Mission::continuous_q_ib(const lie::Mat3& R_ib) const noexcept {
+Quat WaypointSequencer::continuous_q_ib(const lie::Mat3& R_ib) const noexcept {
   // The quaternion of (4) evolves continuously; rotation_to_quat picks η ≥ 0, so restore the
   // sign nearest the previous sample. (27) is not invariant under q → −q: a sign jump would
   // reverse the proportional term.
@@ -70,7 +71,7 @@ Quat Mission::continuous_q_ib(const lie::Mat3& R_ib) const noexcept {
   return q.dot(q_ib_) < 0.0 ? Quat(-q) : q;
 }
 
-void Mission::start_leg(const MissionInputs& in) noexcept {
+void WaypointSequencer::start_leg(const MissionInputs& in) noexcept {
   const Vec3 e_i = waypoints_[static_cast<std::size_t>(index_)] - in.p_i;
   leg_distance_ = e_i.norm();
   // Chart: the current attitude turned by the shortest arc from x_b to ê, so that aligning
@@ -90,7 +91,7 @@ void Mission::start_leg(const MissionInputs& in) noexcept {
   q_hold_ = chart_accel_;
 }
 
-void Mission::enter(Mode next, const MissionInputs& in) noexcept {
+void WaypointSequencer::enter(Mode next, const MissionInputs& in) noexcept {
   if (next == Mode::flip) {
     // Reversed error frame (Fig. 1(b)): the current error frame turned by π about its z axis,
     // so the reversed vector starts on the chart's x axis (ϑ = 0) and not at ϑ = π.
@@ -225,7 +226,7 @@ TransitionReason fine_transition(const MissionParams& p, const LegMeasures& m, M
 
 }  // namespace
 
-TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) const noexcept {
+TransitionReason WaypointSequencer::state_transition(const MissionInputs& in, Mode& next) const noexcept {
   LegMeasures m = measure_leg(params_, waypoints_[static_cast<std::size_t>(index_)], in, leg_distance_);
   m.brake_needed = brake_needed(m.speed);
   if (lateral_too_fast(params_, m) && (mode_ == Mode::align || mode_ == Mode::accelerate || mode_ == Mode::coast)) {
@@ -248,7 +249,7 @@ TransitionReason Mission::state_transition(const MissionInputs& in, Mode& next) 
 }
 
 
-DesiredAttitude Mission::evaluate(const MissionInputs& in, const Vec3& a_i) noexcept {
+DesiredAttitude WaypointSequencer::evaluate(const MissionInputs& in, const Vec3& a_i) noexcept {
   if (mode_ == Mode::brake) {
     // x_b against the velocity, reached from the current attitude by the shortest arc (no
     // roll), re-aimed every sample: a misaligned engine turns the velocity while braking.
@@ -330,7 +331,7 @@ Vec3 capped_feed_forward(const Vec3& omega_d, double dt) noexcept {
 
 }  // namespace
 
-void Mission::begin_sample(const MissionInputs& in) noexcept {
+void WaypointSequencer::begin_sample(const MissionInputs& in) noexcept {
   q_ib_ = started_ ? continuous_q_ib(in.R_ib) : lie::rotation_to_quat(in.R_ib);
   if (!started_) {
     started_ = true;
@@ -340,7 +341,7 @@ void Mission::begin_sample(const MissionInputs& in) noexcept {
   }
 }
 
-void Mission::take_position_transition(const MissionInputs& in, MissionCommand& cmd) noexcept {
+void WaypointSequencer::take_position_transition(const MissionInputs& in, MissionCommand& cmd) noexcept {
   Mode next = mode_;
   const TransitionReason reason = state_transition(in, next);
   if (reason == TransitionReason::none) return;
@@ -360,7 +361,7 @@ void Mission::take_position_transition(const MissionInputs& in, MissionCommand& 
   }
 }
 
-void Mission::take_pointing_transition(double pointing, MissionCommand& cmd) noexcept {
+void WaypointSequencer::take_pointing_transition(double pointing, MissionCommand& cmd) noexcept {
   if (!cmd.transition && pointing < params_.pointing_tolerance &&
       (mode_ == Mode::align || mode_ == Mode::flip)) {
     cmd.transition = true;
@@ -370,7 +371,7 @@ void Mission::take_pointing_transition(double pointing, MissionCommand& cmd) noe
   }
 }
 
-MissionCommand Mission::step(const MissionInputs& in) noexcept {
+MissionCommand WaypointSequencer::step(const MissionInputs& in) noexcept {
   MissionCommand cmd;
   begin_sample(in);
   // (a) transitions decided by position and velocity.

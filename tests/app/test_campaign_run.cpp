@@ -132,6 +132,13 @@ TEST(CampaignRun, ResumeRunsOnlyTheMissingRunsAndGivesTheBytesOfOneCampaign) {
   fs::remove_all(cut);
 }
 
+TEST(CampaignRun, RunStatusesHaveTheirRunsCsvNames) {
+  EXPECT_STREQ(status_name(RunStatus::ok), "ok");
+  EXPECT_STREQ(status_name(RunStatus::rejected), "rejected");
+  EXPECT_STREQ(status_name(RunStatus::failed), "failed");
+  EXPECT_EQ(kRunStatusNames.find("rejected"), RunStatus::rejected);
+}
+
 TEST(CampaignRun, TheScratchFolderOfARankIsBelowDir) {
   EXPECT_EQ(campaign_scratch("out", 3), fs::path("out") / ".scratch" / "rank3");
 }

@@ -135,7 +135,7 @@ TEST(CampaignCli, ResumeAfterAnInterruptionGivesTheSameResult) {
 }
 
 // --resume adds rows only to the same campaign: same scenario bytes, seed, kind and version
-// (cli/campaign_identity.hpp); otherwise exit 2 naming the difference, and the folder is left as
+// (app/campaign_identity.hpp); otherwise exit 2 naming the difference, and the folder is left as
 // it was.
 TEST(CampaignCli, ResumeRefusesAnotherSeedOrAChangedScenario) {
   const auto dir = fresh_dir("campaign_identity");

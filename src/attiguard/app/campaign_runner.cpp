@@ -32,15 +32,8 @@ bool is_figure(const std::string& key, const nlohmann::json& v) {
 }  // namespace
 
 const char* status_name(RunStatus s) noexcept {
-  switch (s) {
-    case RunStatus::ok:
-      return "ok";
-    case RunStatus::rejected:
-      return "rejected";
-    case RunStatus::failed:
-      return "failed";
-  }
-  return "failed";
+  const std::string_view name = kRunStatusNames.name(s);  // a string literal: NUL-terminated
+  return name == "?" ? "failed" : name.data();
 }
 
 Campaign load_campaign(const std::filesystem::path& path, std::uint64_t seed,

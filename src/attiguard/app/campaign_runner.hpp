@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "attiguard/app/kinds.hpp"
+#include "attiguard/core/name_table.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
 
@@ -35,6 +36,10 @@ struct Campaign {
 
 /// Outcome of one run.
 enum class RunStatus { ok, rejected, failed };
+/// The names of the statuses in runs.csv's `status` column (docs/campaigns.md, "Outputs").
+inline constexpr NameTable<RunStatus, 3> kRunStatusNames{
+    {{{RunStatus::ok, "ok"}, {RunStatus::rejected, "rejected"}, {RunStatus::failed, "failed"}}}};
+/// The name of `s` in kRunStatusNames.
 [[nodiscard]] const char* status_name(RunStatus s) noexcept;
 
 /// One run of a campaign.

@@ -12,6 +12,7 @@
 
 namespace attiguard::reach {
 
+/// z of the comparison system with its components named (docs/reach.md, "Enclosure U_i").
 struct Deviation {
   /// z = (d_1, d_2, d_3, e_ω, e_R): the comparison system's vector (docs/reach.md, "Enclosure
   /// U_i", step 2).
@@ -32,7 +33,9 @@ struct Deviation {
   [[nodiscard]] lie::Vec3 omega_half_widths() const;
   /// Componentwise minimum: the bounds that hold when both hold.
   [[nodiscard]] Deviation min(const Deviation& other) const;
+  /// Every component finite.
   [[nodiscard]] bool all_finite() const;
+  /// Every component equal (the tube is propagated again only for a different start).
   [[nodiscard]] bool operator==(const Deviation& other) const;
 };
 

@@ -256,8 +256,9 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
 /// of that instant and its torque is held until t_{k+1} (zero-order hold); between the instants
 /// only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight loop").
 PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  const governor::GovernorParams params = governor_params(sc);
-  governor::AttitudeGovernor gov(params, governor_cones(sc));
+  const governor::GovernorDesign design = design_governor(sc);
+  const governor::GovernorParams& params = design.params;
+  governor::AttitudeGovernor gov(params, design.cones);
   const dynamics::RigidBody body(sc.params.J);
   PetErgResult r = initial_result(sc, gov);
 
@@ -382,7 +383,7 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
   if (wheels) {
     const dynamics::WheelVector h = momenta(sc.duration);
     r.final_wheel_momentum.assign(h.begin(), h.begin() + array.count());
-    r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
+    r.gamma_d_upper = std::min(r.gamma_d_upper, design.wheels.gamma_d_upper);
   }
   return r;
 }
@@ -421,7 +422,8 @@ nlohmann::json imperfections_json(const PetErgImperfections& im) {
 
 /// The robust margin of the run (docs/pet-erg.md, section 13), echoed in summary.json.
 nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
-  const governor::RobustMargin& m = *sc.params.robust;
+  const governor::GovernorDesign design = design_governor(sc);
+  const governor::RobustMargin& m = *design.params.robust;
   // The guarantee assumes the wheels' momenta within their limits (checked, not governed).
   const bool momentum_held = sc.wheels.empty() || r.max_wheel_momentum_ratio <= 1.0;
   return {{"assumption_wheel_momentum_within_limits", momentum_held},
@@ -436,8 +438,8 @@ nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
             {"hold", m.hold_error},
             {"reference_lag", m.reference_lag_error}}},
           {"command_error", m.command_error},
-          {"tau_max_reduced", sc.robust_tau_max},
-          {"wheel_gamma_d_reduced", sc.wheels.empty() ? nlohmann::json(nullptr) : nlohmann::json(sc.robust_polytope_gamma_d)},
+          {"tau_max_reduced", design.tau_max_reduced},
+          {"wheel_gamma_d_reduced", sc.wheels.empty() ? nlohmann::json(nullptr) : nlohmann::json(design.wheel_gamma_d_reduced)},
           {"gamma_min", m.gamma_min},
           {"measurement_margin", m.measurement_margin},
           {"max_reference_step", std::isfinite(m.max_reference_step) ? nlohmann::json(m.max_reference_step) : nlohmann::json(nullptr)},
@@ -491,12 +493,13 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   j["duration"] = sc.duration;
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
-  j["margins"] = sc.params.robust ? "robust" : "nominal";
-  if (sc.params.robust) j["robust"] = robust_json(sc, r);
+  j["margins"] = std::string(governor::kMarginsNames.name(sc.margins));
+  if (sc.margins == governor::Margins::robust) j["robust"] = robust_json(sc, r);
   if (!sc.wheels.empty()) {
     j["wheels"] = static_cast<long>(sc.wheels.size());
-    j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
-    j["wheel_binding"] = sc.wheel_binding;
+    const governor::WheelPolytope polytope = governor::wheel_polytope(design_inputs(sc));
+    j["wheel_gamma_d"] = polytope.gamma_d;
+    j["wheel_binding"] = polytope.binding;
     j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
     j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
     j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
@@ -536,7 +539,7 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
                                                 r.max_wheel_momentum_ratio <= 1.0);
   j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
   // With robust margins the level is W (docs/pet-erg.md, section 13), of the true state.
-  j["lyapunov_level"] = sc.params.robust ? "W" : "V";
+  j["lyapunov_level"] = sc.margins == governor::Margins::robust ? "W" : "V";
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
   j["final_attitude_error"] = r.final_attitude_error;

@@ -309,7 +309,10 @@ std::vector<double> margins_of(const GovernorOutput& o) {
 
 }  // namespace
 
-void bind_governor(py::module_& m) {
+namespace {
+
+/// Cone (constraint (2b) of the PET-ERG paper), keep_in_cone, keep_out_cone.
+void bind_cones(py::module_& m) {
   py::class_<ConeConstraint>(m, "Cone",
                              "Pointing constraint (2b) of the PET-ERG paper: a_cᵀ R a_b ≥ cos θ_c.")
       .def_readonly("axis_b", &ConeConstraint::axis_b)
@@ -343,6 +346,10 @@ void bind_governor(py::module_& m) {
         "Keep-out cone of half-angle α around direction_i, as the keep-in cone (2b) of π − α: "
         "exactly one of half_angle_deg, half_angle_rad; checked as a [[cones]] table.");
 
+}
+
+/// pd_torque (PD law (3)), RigidBody (Euler's equation (1)), GovernorOutput.
+void bind_pd_body_output(py::module_& m) {
   m.def("pd_torque",
         [](const Mat3& R, const Vec3& w, const Mat3& R_g, double kp, double kd) {
           constexpr const char* kLabel = "pd_torque()";
@@ -394,9 +401,14 @@ void bind_governor(py::module_& m) {
       .def_readonly("sampled", &GovernorOutput::sampled)
       .def_property_readonly("margins", &margins_of)
       .def_property_readonly("min_margin", &GovernorOutput::min_margin);
+}
 
-  py::class_<PyGovernor>(m, "Governor",
-                         "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.")
+using GovernorClass = py::class_<PyGovernor>;
+
+/// Governor(...) from plain values by governor::design (docs/pet-erg.md, sections 10-13),
+/// Governor.from_scenario, reset and step (PET-ERG paper, Fig. 1).
+void def_governor_flight_loop(GovernorClass& cls) {
+  cls
       .def(py::init([](const Mat3& J, double kp, double kd, double tau_max,
                        const std::vector<ConeConstraint>& cones, const std::string& mode, double kappa,
                        double c_gamma, double Ts, double epsilon, double epsilon_gamma,
@@ -441,7 +453,12 @@ void bind_governor(py::module_& m) {
            py::arg("R_d"),
            "One control step (PET-ERG paper, Fig. 1): returns a GovernorOutput with τ (3). "
            "Refuses a call before reset(), time going backwards, a non-rotation R or R_d and a "
-           "non-finite omega_b (ValueError naming the argument).")
+           "non-finite omega_b (ValueError naming the argument).");
+}
+
+/// The stateless evaluations of (3)-(6), the robust margin and the design figures, the state.
+void def_governor_evaluations(GovernorClass& cls) {
+  cls
       .def("evaluate", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g,
                           const Mat3& R_d, const py::object& flag_arg) {
              if (!py::isinstance<py::bool_>(flag_arg)) {
@@ -498,6 +515,16 @@ void bind_governor(py::module_& m) {
       .def_property_readonly("cones", [](const PyGovernor& g) {
         return std::vector<ConeConstraint>(g.governor().cones().begin(), g.governor().cones().end());
       });
+}
+
+}  // namespace
+
+void bind_governor(py::module_& m) {
+  bind_cones(m);
+  bind_pd_body_output(m);
+  GovernorClass cls(m, "Governor", "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.");
+  def_governor_flight_loop(cls);
+  def_governor_evaluations(cls);
 }
 
 }  // namespace attiguard::python

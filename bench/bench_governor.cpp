@@ -164,10 +164,10 @@ FlightRecord measured_states(attiguard::sim::PetErgScenario sc) {
 }
 
 // One control instant of the pet_erg flight loop (docs/pet-erg.md, sections 11-13;
-// sim/pet_erg_run.cpp, simulate_flight_loop's `control`, without the sensor draw: the measured state comes from the ring above): R_d(t),
+// sim::HeldActuation::control, without the sensor draw: the measured state comes from the ring above): R_d(t),
 // AttitudeGovernor::step on the measured state, quantisation of the torque, allocation u = A⁺τ
 // to the 4 wheels. The governor and the wheels are built as the flight loop builds them
-// (sim::governor_params / governor_cones of the parsed example). The states are replayed in
+// (sim::design_governor of the parsed example). The states are replayed in
 // order over the whole 1500 s manoeuvre; at its end the governor is reset to R_g(0) and the
 // manoeuvre replays (the reset is timed, once per 15 001 steps). Arg 1: robust margins
 // (examples/pet_erg_robust_campaign.toml), arg 0: nominal margins (its _nominal twin).
@@ -175,13 +175,14 @@ void BM_RobustWheelFlightStep(benchmark::State& state) {
   const bool robust = state.range(0) == 1;
   const auto sc = example_scenario(robust ? "pet_erg_robust_campaign.toml"
                                           : "pet_erg_robust_campaign_nominal.toml");
-  if (sc.params.robust.has_value() != robust || sc.wheels.size() != 4) {
+  if ((sc.margins == attiguard::governor::Margins::robust) != robust || sc.wheels.size() != 4) {
     state.SkipWithError("the example does not have the expected margins and 4 wheels");
     return;
   }
   const FlightRecord rec = measured_states(sc);
   const std::vector<MeasuredSample>& ring = rec.ring;
-  AttitudeGovernor gov(attiguard::sim::governor_params(sc), attiguard::sim::governor_cones(sc));
+  const attiguard::governor::GovernorDesign design = attiguard::sim::design_governor(sc);
+  AttitudeGovernor gov(design.params, design.cones);
   const attiguard::dynamics::ReactionWheelArray array(sc.wheels);
   const double quantum = sc.imperfections.torque_quantum;
   // Untimed: the replay moves R_g exactly as the simulated flight loop did.

@@ -20,6 +20,7 @@
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/governor_design.hpp"
 #include "attiguard/scenario/argument_checks.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/pet_erg_scenario.hpp"
@@ -91,22 +92,128 @@ std::string with_argument_names(std::string m) {
   return m;
 }
 
+/// The design arguments of Governor() beyond the governor block (docs/pet-erg.md, sections
+/// 10-13): the flight-loop period, the wheels, the margins and the imperfection bounds.
+struct DesignArgs {
+  double control_period{0.0};
+  std::vector<py::dict> wheels;
+  std::string margins{"nominal"};
+  governor::ImperfectionBounds bounds;
+  double robust_reference_step{0.0};
+};
+
+/// A number of a wheel's dict: a Python int or float (not a str or bool), else TypeError.
+double wheel_number(const py::dict& wheel, const char* key, const std::string& where) {
+  const py::object v = wheel[key];
+  if (py::isinstance<py::bool_>(v) || !(py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v))) {
+    throw py::type_error("Governor(): " + where + "." + key + ": must be a number");
+  }
+  return v.cast<double>();
+}
+
+/// wheels[i] of Governor(): a dict with the keys of a [[wheels]] table (axis_b, torque_max,
+/// momentum_max, optional momentum; docs/pet-erg.md, section 12), checked as the file reader
+/// does: a finite non-zero axis (normalised), positive limits, |momentum| <= momentum_max.
+dynamics::ReactionWheel checked_wheel(const py::dict& wheel, std::size_t i) {
+  constexpr const char* kLabel = "Governor()";
+  const std::string where = "wheels[" + std::to_string(i) + "]";
+  for (const auto& [key, value] : wheel) {
+    (void)value;
+    const std::string k = py::str(key).cast<std::string>();
+    if (k != "axis_b" && k != "torque_max" && k != "momentum_max" && k != "momentum") {
+      throw InputError(std::string(kLabel) + ": " + where + ": unknown key '" + k +
+                       "' (axis_b, torque_max, momentum_max, momentum)");
+    }
+  }
+  for (const char* key : {"axis_b", "torque_max", "momentum_max"}) {
+    if (!wheel.contains(key)) throw InputError(std::string(kLabel) + ": " + where + ": missing " + key);
+  }
+  Vec3 axis = Vec3::Zero();
+  try {
+    axis = wheel["axis_b"].cast<Vec3>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string(kLabel) + ": " + where + ".axis_b: must be 3 numbers");
+  }
+  axis = scenario::checked_vector3(axis, where + ".axis_b", kLabel);
+  if (!(axis.norm() > 0.0) || !std::isfinite(axis.norm())) {
+    throw InputError(std::string(kLabel) + ": " + where + ".axis_b: must be a non-zero direction");
+  }
+  dynamics::ReactionWheel w;
+  w.axis_b = axis / axis.norm();
+  w.torque_max = scenario::checked_number(wheel_number(wheel, "torque_max", where), where + ".torque_max", true, kLabel);
+  w.momentum_max =
+      scenario::checked_number(wheel_number(wheel, "momentum_max", where), where + ".momentum_max", true, kLabel);
+  if (wheel.contains("momentum")) {
+    w.momentum0 = wheel_number(wheel, "momentum", where);
+    if (!std::isfinite(w.momentum0) || std::abs(w.momentum0) > w.momentum_max) {
+      throw InputError(std::string(kLabel) + ": " + where + ".momentum: must be finite with |momentum| <= momentum_max");
+    }
+  }
+  return w;
+}
+
+/// The inputs of governor::design from the governor block `p`, `cones` and the design arguments,
+/// each checked (finite, non-negative bounds; delay 0 or 1; margins "nominal" or "robust").
+governor::GovernorDesignInputs design_inputs(const GovernorParams& p, const std::vector<ConeConstraint>& cones,
+                                             const DesignArgs& a) {
+  constexpr const char* kLabel = "Governor()";
+  governor::GovernorDesignInputs in;
+  in.params = p;
+  in.cones = cones;
+  for (std::size_t i = 0; i < a.wheels.size(); ++i) in.wheels.push_back(checked_wheel(a.wheels[i], i));
+  in.control_period = scenario::checked_number(a.control_period, "control_period", false, kLabel);
+  const std::optional<governor::Margins> margins = governor::kMarginsNames.find(a.margins);
+  if (!margins) {
+    throw InputError(std::string(kLabel) + ": margins: must be \"nominal\" or \"robust\", got '" + a.margins + "'");
+  }
+  in.margins = *margins;
+  const governor::ImperfectionBounds& b = a.bounds;
+  in.bounds.disturbance = scenario::checked_number(b.disturbance, "disturbance_bound", false, kLabel);
+  in.bounds.attitude_bias = scenario::checked_number(b.attitude_bias, "attitude_bias_bound", false, kLabel);
+  in.bounds.attitude_noise = scenario::checked_number(b.attitude_noise, "attitude_noise", false, kLabel);
+  in.bounds.rate_bias = scenario::checked_number(b.rate_bias, "rate_bias_bound", false, kLabel);
+  in.bounds.rate_noise = scenario::checked_number(b.rate_noise, "rate_noise", false, kLabel);
+  in.bounds.torque_quantum = scenario::checked_number(b.torque_quantum, "torque_quantum", false, kLabel);
+  if (b.delay_periods != 0 && b.delay_periods != 1) {
+    throw InputError(std::string(kLabel) + ": delay_periods: must be 0 or 1, got " + std::to_string(b.delay_periods));
+  }
+  in.bounds.delay_periods = b.delay_periods;
+  in.max_reference_step = scenario::checked_number(a.robust_reference_step, "robust_reference_step", false, kLabel);
+  return in;
+}
+
+/// The design figures of a governor (docs/pet-erg.md, sections 12-13), for Governor.design.
+py::dict design_dict(const governor::GovernorDesign& d) {
+  py::dict out;
+  out["wheel_gamma_d"] = d.wheels.gamma_d;
+  out["wheel_gamma_d_upper"] = d.wheels.gamma_d_upper;
+  out["wheel_binding"] = d.wheels.binding;
+  out["tau_max_reduced"] = d.tau_max_reduced;
+  out["wheel_gamma_d_reduced"] = d.wheel_gamma_d_reduced;
+  out["bounded_step"] = d.params.bounded_step;
+  out["tau_max"] = d.params.tau_max;
+  out["polytope_gamma_d"] = d.params.polytope_gamma_d;
+  return out;
+}
+
 /// A Governor for Python: the flight-loop object plus the checks of its calls (reset before
 /// step, time never backwards, rotations and finite vectors: scenario/argument_checks.hpp).
 /// Set-up code, not the flight loop: the checks allocate.
 class PyGovernor {
  public:
+  /// The governor of governor::design (docs/pet-erg.md, sections 10-13) from plain values: the
+  /// governor block, the cones and the design arguments.
   PyGovernor(const Mat3& J, double kp, double kd, double tau_max,
              const std::vector<ConeConstraint>& cones, const std::string& mode, double kappa,
-             double c_gamma, double Ts, double epsilon, double epsilon_gamma)
-      : gov_(make(J, kp, kd, tau_max, cones, mode, kappa, c_gamma, Ts, epsilon, epsilon_gamma)) {}
+             double c_gamma, double Ts, double epsilon, double epsilon_gamma, const DesignArgs& args)
+      : PyGovernor(make(J, kp, kd, tau_max, cones, mode, kappa, c_gamma, Ts, epsilon, epsilon_gamma, args)) {}
 
   /// The governor exactly as the flight loop of a `pet_erg` scenario builds it: its wheels'
   /// polytope, the bounded step with control_period > 0, and with margins = "robust" the robust
   /// margins, reduced limits and tightened cones (docs/pet-erg.md, sections 10-13).
   static PyGovernor from_scenario(const std::string& path) {
     const sim::PetErgScenario sc = scenario::parse_pet_erg(scenario::load_document(path));
-    return PyGovernor(AttitudeGovernor(sim::governor_params(sc), sim::governor_cones(sc)));
+    return PyGovernor(sim::design_governor(sc));
   }
 
   void reset(double t0, const Mat3& R_g0) {
@@ -135,31 +242,50 @@ class PyGovernor {
   }
 
   [[nodiscard]] const AttitudeGovernor& governor() const noexcept { return gov_; }
+  /// The design the governor was built from (docs/pet-erg.md, sections 12-13).
+  [[nodiscard]] const governor::GovernorDesign& design() const noexcept { return design_; }
 
  private:
-  explicit PyGovernor(AttitudeGovernor gov) : gov_(std::move(gov)) {}
+  explicit PyGovernor(governor::GovernorDesign d)
+      : design_(std::move(d)), gov_(checked(design_)) {}
+
+  /// The governor of a design, its constructor's errors labelled (scenario/argument_checks.hpp).
+  static AttitudeGovernor checked(const governor::GovernorDesign& d) {
+    try {
+      return scenario::checked_governor(d.params, d.cones, "Governor()");
+    } catch (const InputError& e) {
+      throw InputError(with_argument_names(e.what()));
+    }
+  }
 
   static constexpr const char* kLabelReset = "Governor.reset()";
   static constexpr const char* kLabelStep = "Governor.step()";
 
-  static AttitudeGovernor make(const Mat3& J, double kp, double kd, double tau_max,
-                               const std::vector<ConeConstraint>& cones, const std::string& mode,
-                               double kappa, double c_gamma, double Ts, double epsilon,
-                               double epsilon_gamma) {
+  static governor::GovernorDesign make(const Mat3& J, double kp, double kd, double tau_max,
+                                       const std::vector<ConeConstraint>& cones, const std::string& mode,
+                                       double kappa, double c_gamma, double Ts, double epsilon,
+                                       double epsilon_gamma, const DesignArgs& design_args) {
     const nlohmann::json args = {
         {"governor", mode},
         {"inertia", rows_of(J)},
         {"control", {{"kp", kp}, {"kd", kd}, {"tau_max", tau_max}}},
         {"erg", {{"kappa", kappa}, {"c_gamma", c_gamma}, {"sampling_period", Ts},
                  {"epsilon", epsilon}, {"epsilon_gamma", epsilon_gamma}}}};
+    GovernorParams p;
     try {
-      const GovernorParams p = scenario::checked_governor_params(args, "Governor()");
-      return scenario::checked_governor(p, cones, "Governor()");
+      p = scenario::checked_governor_params(args, "Governor()");
     } catch (const InputError& e) {
       throw InputError(with_argument_names(e.what()));
     }
+    const governor::GovernorDesignInputs in = design_inputs(p, cones, design_args);
+    try {
+      return governor::design(in);
+    } catch (const SetupError& e) {
+      throw InputError(std::string("Governor(): ") + e.what());
+    }
   }
 
+  governor::GovernorDesign design_;
   AttitudeGovernor gov_;
   bool started_{false};
   double last_t_{0.0};
@@ -183,7 +309,10 @@ std::vector<double> margins_of(const GovernorOutput& o) {
 
 }  // namespace
 
-void bind_governor(py::module_& m) {
+namespace {
+
+/// Cone (constraint (2b) of the PET-ERG paper), keep_in_cone, keep_out_cone.
+void bind_cones(py::module_& m) {
   py::class_<ConeConstraint>(m, "Cone",
                              "Pointing constraint (2b) of the PET-ERG paper: a_cᵀ R a_b ≥ cos θ_c.")
       .def_readonly("axis_b", &ConeConstraint::axis_b)
@@ -217,6 +346,10 @@ void bind_governor(py::module_& m) {
         "Keep-out cone of half-angle α around direction_i, as the keep-in cone (2b) of π − α: "
         "exactly one of half_angle_deg, half_angle_rad; checked as a [[cones]] table.");
 
+}
+
+/// pd_torque (PD law (3)), RigidBody (Euler's equation (1)), GovernorOutput.
+void bind_pd_body_output(py::module_& m) {
   m.def("pd_torque",
         [](const Mat3& R, const Vec3& w, const Mat3& R_g, double kp, double kd) {
           constexpr const char* kLabel = "pd_torque()";
@@ -268,17 +401,47 @@ void bind_governor(py::module_& m) {
       .def_readonly("sampled", &GovernorOutput::sampled)
       .def_property_readonly("margins", &margins_of)
       .def_property_readonly("min_margin", &GovernorOutput::min_margin);
+}
 
-  py::class_<PyGovernor>(m, "Governor",
-                         "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.")
-      .def(py::init<const Mat3&, double, double, double, const std::vector<ConeConstraint>&,
-                    const std::string&, double, double, double, double, double>(),
+using GovernorClass = py::class_<PyGovernor>;
+
+/// Governor(...) from plain values by governor::design (docs/pet-erg.md, sections 10-13),
+/// Governor.from_scenario, reset and step (PET-ERG paper, Fig. 1).
+void def_governor_flight_loop(GovernorClass& cls) {
+  cls
+      .def(py::init([](const Mat3& J, double kp, double kd, double tau_max,
+                       const std::vector<ConeConstraint>& cones, const std::string& mode, double kappa,
+                       double c_gamma, double Ts, double epsilon, double epsilon_gamma,
+                       double control_period, const std::vector<py::dict>& wheels, const std::string& margins,
+                       double disturbance_bound, double attitude_bias_bound, double attitude_noise,
+                       double rate_bias_bound, double rate_noise, int delay_periods, double torque_quantum,
+                       double robust_reference_step) {
+             DesignArgs a;
+             a.control_period = control_period;
+             a.wheels = wheels;
+             a.margins = margins;
+             a.bounds = {disturbance_bound, attitude_bias_bound, attitude_noise, rate_bias_bound,
+                         rate_noise,        delay_periods,       torque_quantum};
+             a.robust_reference_step = robust_reference_step;
+             return PyGovernor(J, kp, kd, tau_max, cones, mode, kappa, c_gamma, Ts, epsilon, epsilon_gamma, a);
+           }),
            py::arg("J"), py::kw_only(), py::arg("kp"), py::arg("kd"), py::arg("tau_max"),
            py::arg("cones") = std::vector<ConeConstraint>{}, py::arg("mode") = "pet",
            py::arg("kappa") = 1.0, py::arg("c_gamma") = 3.0, py::arg("Ts") = 0.5,
            py::arg("epsilon") = 1e-3, py::arg("epsilon_gamma") = 0.1,
+           py::arg("control_period") = 0.0, py::arg("wheels") = std::vector<py::dict>{},
+           py::arg("margins") = "nominal", py::arg("disturbance_bound") = 0.0,
+           py::arg("attitude_bias_bound") = 0.0, py::arg("attitude_noise") = 0.0,
+           py::arg("rate_bias_bound") = 0.0, py::arg("rate_noise") = 0.0, py::arg("delay_periods") = 0,
+           py::arg("torque_quantum") = 0.0, py::arg("robust_reference_step") = 0.0,
            "kp, kd, tau_max are required (as in a scenario file); every argument is checked by "
-           "the scenario readers (ValueError naming it).")
+           "the scenario readers (ValueError naming it). The governor is built by governor::design "
+           "(docs/pet-erg.md, sections 10-13): control_period > 0 gives the flight loop's bounded "
+           "step; wheels (dicts with axis_b, torque_max, momentum_max, momentum, as [[wheels]]) "
+           "their polytope's Gamma_d; margins = \"robust\" the robust margin from the bounds "
+           "(disturbance_bound, attitude_bias_bound, attitude_noise, rate_bias_bound, rate_noise, "
+           "delay_periods, torque_quantum, robust_reference_step; 0: derived) with the reduced "
+           "torque limits and tightened cones.")
       .def_static("from_scenario", &PyGovernor::from_scenario, py::arg("path"),
                   "The governor of a pet_erg scenario file exactly as its flight loop builds it "
                   "(wheel polytope, bounded step, robust margins with margins = \"robust\"; "
@@ -290,7 +453,12 @@ void bind_governor(py::module_& m) {
            py::arg("R_d"),
            "One control step (PET-ERG paper, Fig. 1): returns a GovernorOutput with τ (3). "
            "Refuses a call before reset(), time going backwards, a non-rotation R or R_d and a "
-           "non-finite omega_b (ValueError naming the argument).")
+           "non-finite omega_b (ValueError naming the argument).");
+}
+
+/// The stateless evaluations of (3)-(6), the robust margin and the design figures, the state.
+void def_governor_evaluations(GovernorClass& cls) {
+  cls
       .def("evaluate", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g,
                           const Mat3& R_d, const py::object& flag_arg) {
              if (!py::isinstance<py::bool_>(flag_arg)) {
@@ -336,12 +504,27 @@ void bind_governor(py::module_& m) {
              const State x = checked_state(R, w, R_g, "Governor.trigger_condition()");
              return g.governor().trigger_condition(x.R, x.omega_b, x.R_g);
            }, py::arg("R"), py::arg("omega_b"), py::arg("R_g"), "Trigger (5): Γ(R_g) − c_Γ V ≥ 0.")
+      .def_property_readonly("design", [](const PyGovernor& g) { return design_dict(g.design()); },
+                             "The design figures (docs/pet-erg.md, sections 12-13): wheel_gamma_d, "
+                             "wheel_gamma_d_upper, wheel_binding (-1 without wheels), tau_max_reduced "
+                             "and wheel_gamma_d_reduced (0 with the nominal margins), bounded_step, and "
+                             "the tau_max and polytope_gamma_d the governor runs with.")
       .def_property_readonly("reference", [](const PyGovernor& g) { return g.governor().reference(); })
       .def_property_readonly("trigger_flag", [](const PyGovernor& g) { return g.governor().trigger_flag(); })
       .def_property_readonly("gamma_d", [](const PyGovernor& g) { return g.governor().gamma_d(); })
       .def_property_readonly("cones", [](const PyGovernor& g) {
         return std::vector<ConeConstraint>(g.governor().cones().begin(), g.governor().cones().end());
       });
+}
+
+}  // namespace
+
+void bind_governor(py::module_& m) {
+  bind_cones(m);
+  bind_pd_body_output(m);
+  GovernorClass cls(m, "Governor", "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.");
+  def_governor_flight_loop(cls);
+  def_governor_evaluations(cls);
 }
 
 }  // namespace attiguard::python

@@ -210,6 +210,35 @@ def hostile_cones(rng, base):
     yield None
 
 
+def hostile_wheels(rng, base):
+    good = {"axis_b": [1.0, 0.0, 0.0], "torque_max": 0.1, "momentum_max": 1.0}
+    yield 5
+    yield "abc"
+    yield [None]
+    yield [5.0]
+    yield None
+    yield [dict(good, axis_b=[0.0, 0.0, 0.0])]
+    yield [dict(good, axis_b=[NAN, 0.0, 0.0])]
+    yield [dict(good, axis_b=[1.0, 2.0])]
+    yield [dict(good, axis_b="x")]
+    yield [dict(good, torque_max=-1.0)]
+    yield [dict(good, torque_max=INF)]
+    yield [dict(good, momentum_max=0.0)]
+    yield [dict(good, momentum_max="1.0")]
+    yield [dict(good, momentum=2.0)]
+    yield [dict(good, momentum=NAN)]
+    yield [dict(good, spin=1.0)]
+    yield [{"axis_b": [1.0, 0.0, 0.0], "torque_max": 0.1}]
+
+
+def hostile_delay(rng, base):
+    yield -1
+    yield 2
+    yield 0.5
+    yield "1"
+    yield None
+
+
 def hostile_waypoints(rng, base):
     yield "abc"
     yield [[NAN, 0.0, 0.0]]
@@ -437,7 +466,18 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
                            "c_gamma": Arg(_const(3.0), hostile_positive, True),
                            "Ts": Arg(_const(0.5), hostile_positive, True),
                            "epsilon": Arg(_const(1e-3), hostile_positive, True),
-                           "epsilon_gamma": Arg(_const(0.1), hostile_positive, True)}, True),
+                           "epsilon_gamma": Arg(_const(0.1), hostile_positive, True),
+                           "control_period": Arg(_const(0.0), hostile_nonnegative, True),
+                           "wheels": Arg(_const([]), hostile_wheels, True),
+                           "margins": Arg(_const("nominal"), hostile_str, True),
+                           "disturbance_bound": Arg(_const(0.0), hostile_nonnegative, True),
+                           "attitude_bias_bound": Arg(_const(0.0), hostile_nonnegative, True),
+                           "attitude_noise": Arg(_const(0.0), hostile_nonnegative, True),
+                           "rate_bias_bound": Arg(_const(0.0), hostile_nonnegative, True),
+                           "rate_noise": Arg(_const(0.0), hostile_nonnegative, True),
+                           "delay_periods": Arg(_const(0), hostile_delay, True),
+                           "torque_quantum": Arg(_const(0.0), hostile_nonnegative, True),
+                           "robust_reference_step": Arg(_const(0.0), hostile_nonnegative, True)}, True),
     "Governor.from_scenario": (_method(lambda: _fn("Governor")(), "from_scenario"),
                                {"path": Arg(_const(str(REPO / "examples" / "pet_erg_paper.toml")),
                                             hostile_path)}, True),

@@ -5,7 +5,8 @@
 #         [-DBUILD_DIR=<attiguard build>] [-DLAUNCHER=ccache] [-DGENERATOR=<gen>] -P run_consumer.cmake
 #
 # MODE=full:   `cmake --install BUILD_DIR --prefix WORK_DIR/prefix`; the consumer builds
-#              flight_loop (attiguard::flight) and full_link (attiguard::attiguard); full_link is
+#              flight_loop (attiguard::flight), full_link and robust_design (attiguard::attiguard;
+#              robust_design is run on examples/pet_erg_robust_campaign.toml); full_link is
 #              also compiled by hand with `pkg-config --cflags --libs attiguard`.
 # MODE=flight: a fresh ATTIGUARD_FLIGHT_ONLY=ON build of SOURCE_DIR in WORK_DIR/build that may not
 #              find toml++, nlohmann_json, CLI11, CSDP, LAPACK or MPI, installed into
@@ -108,6 +109,11 @@ run("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer --paralle
 foreach(program IN LISTS programs)
   run("run ${program}" ${WORK_DIR}/consumer/${program})
 endforeach()
+# MODE=full: the robust governor with wheels from plain values flies the example's figures.
+if(MODE STREQUAL "full")
+  run("run robust_design" ${WORK_DIR}/consumer/robust_design
+      ${SOURCE_DIR}/examples/pet_erg_robust_campaign.toml)
+endif()
 
 # The same program built with the flags of the installed pkg-config file.
 find_program(PKG_CONFIG pkg-config)

@@ -299,7 +299,7 @@ TEST(AllocationFree, RobustWheelFlightLoopOfTheRobustCampaignExample) {
         scenario::load_document(std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + name);
     sim::PetErgScenario sc = scenario::parse_pet_erg(scenario::nominal_document(doc));
     const bool robust = std::string(name) == "pet_erg_robust_campaign.toml";
-    ASSERT_EQ(sc.params.robust.has_value(), robust) << name;
+    ASSERT_EQ(sc.margins == governor::Margins::robust, robust) << name;
     ASSERT_EQ(sc.wheels.size(), 4U) << name;
     ASSERT_GT(sc.control_period, 0.0) << name;
     sc.output_interval = sc.control_period;
@@ -316,7 +316,8 @@ TEST(AllocationFree, RobustWheelFlightLoopOfTheRobustCampaignExample) {
     });
     ASSERT_GT(rows.size(), 10000U) << name;
 
-    governor::AttitudeGovernor gov(sim::governor_params(sc), sim::governor_cones(sc));
+    const governor::GovernorDesign design = sim::design_governor(sc);
+    governor::AttitudeGovernor gov(design.params, design.cones);
     const dynamics::ReactionWheelArray array(sc.wheels);
     const dynamics::AttitudeSensor& sensor = sc.imperfections.sensor;
     const double quantum = sc.imperfections.torque_quantum;

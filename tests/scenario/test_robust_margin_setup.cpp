@@ -1,6 +1,7 @@
 // `[control] margins = "robust"` (scenario/robust_margin_setup.hpp, docs/pet-erg.md section 13):
-// the reduced torque limits, the cones tightened by the bias bound with their repulsive band moved
-// inwards as Γ_min needs, and the refusals.
+// the design of the parsed scenario (sim::design_governor) with the reduced torque limits, the
+// cones tightened by the bias bound with their repulsive band moved inwards as Γ_min needs, and
+// the refusals located at the file's keys.
 
 #include <gtest/gtest.h>
 
@@ -49,20 +50,30 @@ std::string robust_error_of(const std::string& text) {
 
 TEST(RobustMarginSetup, TheExampleGetsReducedLimitsAndTightenedCones) {
   const sim::PetErgScenario sc = parse(robust_example());
-  ASSERT_TRUE(sc.params.robust.has_value());
-  const governor::RobustMargin& m = *sc.params.robust;
-  EXPECT_NEAR(sc.robust_tau_max, sc.params.tau_max - m.command_error, 1e-15);
-  EXPECT_LT(sc.robust_polytope_gamma_d, sc.params.polytope_gamma_d);
+  ASSERT_EQ(sc.margins, governor::Margins::robust);
+  EXPECT_DOUBLE_EQ(sc.robust_reference_step, 0.002);
+  const governor::GovernorDesign design = sim::design_governor(sc);
+  ASSERT_TRUE(design.params.robust.has_value());
+  const governor::RobustMargin& m = *design.params.robust;
+  EXPECT_NEAR(design.tau_max_reduced, sc.params.tau_max - m.command_error, 1e-15);
+  EXPECT_EQ(design.params.tau_max, design.tau_max_reduced);
+  EXPECT_EQ(design.params.polytope_gamma_d, design.wheel_gamma_d_reduced);
+  EXPECT_LT(design.wheel_gamma_d_reduced, design.wheels.gamma_d);
   EXPECT_GT(m.gamma_min, 0.0);
-  EXPECT_LT(m.gamma_min, (1.0 - m.delta) * sc.robust_polytope_gamma_d);
+  EXPECT_LT(m.gamma_min, (1.0 - m.delta) * design.wheel_gamma_d_reduced);
   EXPECT_DOUBLE_EQ(m.max_reference_step, 0.002);
-  ASSERT_EQ(sc.robust_cones.size(), sc.cones.size());
+  // the scenario holds the user's inputs only: the derived values are the design's
+  EXPECT_FALSE(sc.params.robust.has_value());
+  EXPECT_EQ(sc.params.polytope_gamma_d, 0.0);
+  EXPECT_EQ(sc.margins, governor::Margins::robust);
+  const std::vector<governor::ConeConstraint>& robust_cones = design.cones;
+  ASSERT_EQ(robust_cones.size(), sc.cones.size());
   const double bias = sc.imperfections.attitude_bias_bound;
   EXPECT_DOUBLE_EQ(bias, 0.0215);
   const double gap = std::acos(1.0 - 1.05 * m.gamma_min / ((1.0 - m.delta) * sc.params.gains.kp));
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
     const governor::ConeConstraint& c = sc.cones[i];
-    const governor::ConeConstraint& r = sc.robust_cones[i];
+    const governor::ConeConstraint& r = robust_cones[i];
     EXPECT_NEAR(r.theta_c, c.theta_c - bias, 1e-15) << i;
     // the repulsive potential diverges at least `gap` inside the tightened cone
     EXPECT_GE(r.delta, std::cos(r.theta_c - gap) - 1e-15) << i;
@@ -70,8 +81,8 @@ TEST(RobustMarginSetup, TheExampleGetsReducedLimitsAndTightenedCones) {
     EXPECT_NEAR(r.zeta - r.delta, c.zeta - c.delta, 1e-12) << i;
   }
   // At δ of a tightened cone, Γ_W exceeds Γ_min: the field keeps R_g where moves are admissible.
-  const governor::AttitudeGovernor gov(sim::governor_params(sc), sim::governor_cones(sc));
-  const governor::ConeConstraint& sun = sc.robust_cones[0];
+  const governor::AttitudeGovernor gov(design.params, design.cones);
+  const governor::ConeConstraint& sun = robust_cones[0];
   const double beta = std::acos(sun.delta);  // an attitude with a_cᵀR a_b = δ
   EXPECT_GT((1.0 - m.delta) * sc.params.gains.kp * (1.0 - std::cos(sun.theta_c - beta)), m.gamma_min);
   // the true constraints stay the file's: the Sun keep-out cone of 40° is θ_c = 140°
@@ -137,7 +148,7 @@ TEST(Examples, RobustCampaignPairDiffersOnlyInTheMargins) {
   const std::vector<std::string> nominal = lines("pet_erg_robust_campaign_nominal.toml");
   EXPECT_GT(robust.size(), 80U);
   EXPECT_EQ(robust, nominal);
-  EXPECT_TRUE(parse(robust_example()).params.robust.has_value());
+  EXPECT_EQ(parse(robust_example()).margins, governor::Margins::robust);
 }
 
 }  // namespace

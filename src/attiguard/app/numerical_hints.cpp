@@ -69,7 +69,7 @@ std::string rigid_body_numerical_hint(const scenario::Document& doc) {
 
 std::string pet_erg_numerical_hint(const scenario::Document& doc) {
   const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
-  const governor::GovernorParams& p = sc.params;
+  const governor::GovernorParams p = sim::design_governor(sc).params;
   const double h = sc.integrator.method == integrate::Method::rkmk4 ? sc.integrator.step
                                                                      : sc.integrator.max_step;
   const governor::AttitudeGovernor gov(p, sc.cones);

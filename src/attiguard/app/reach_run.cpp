@@ -11,6 +11,7 @@
 #include "attiguard/io/csv_writer.hpp"
 #include "attiguard/io/interruption.hpp"
 #include "attiguard/io/json_file.hpp"
+#include "attiguard/io/json_values.hpp"
 #include "attiguard/io/partial_file.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/parallel/parallel_for.hpp"
@@ -31,7 +32,6 @@ nlohmann::json mat_json(const Mat3& M) {
   for (int i = 0; i < 3; ++i) a.push_back({M(i, 0), M(i, 1), M(i, 2)});
   return a;
 }
-nlohmann::json vec_json(const Vec3& v) { return {v(0), v(1), v(2)}; }
 
 /// The exp chart in which every attitude ball of every cell fits best (smallest max of
 /// ‖Ψ_i(R_c)‖ + r/√λ_min(Q)); NumericalError when none holds them all.
@@ -70,10 +70,10 @@ nlohmann::json step_json(const ReachStep& st, const SafetyVerdict& verdict) {
   return {{"index", st.index}, {"t", st.t0}, {"t_end", st.t1}, {"c", st.c},
           {"c_identity", st.c_identity}, {"Q", mat_json(st.Q)}, {"S", mat_json(st.S)}, {"P", mat_json(st.P)},
           {"r", st.r},
-          {"omega_box", {{"lower", vec_json(st.omega_box.lo)}, {"upper", vec_json(st.omega_box.hi)}}},
+          {"omega_box", {{"lower", io::json_array(st.omega_box.lo)}, {"upper", io::json_array(st.omega_box.hi)}}},
           {"attitude_box_radius", st.attitude_box.radius},
           {"attitude_radius", st.attitude_radius},
-          {"omega_half_widths", vec_json(st.omega_half_widths)},
+          {"omega_half_widths", io::json_array(st.omega_half_widths)},
           {"lmi_exact", st.lmi_exact}, {"lmi_rho", st.lmi_rho},
           {"fallback", st.fallback}, {"sdp_solves", st.sdp_solves},
           {"rigour", st.proved_rigorously ? "rigorous" : "float"},
@@ -90,7 +90,7 @@ nlohmann::json finals_json(const std::vector<ReachResult>& results) {
   for (const ReachResult& res : results) {
     const ReachStep& last = res.steps.back();
     finals.push_back({{"r", last.r}, {"attitude_radius", last.attitude_radius},
-                      {"omega_half_widths", vec_json(last.omega_half_widths)},
+                      {"omega_half_widths", io::json_array(last.omega_half_widths)},
                       {"wall_time_s", res.wall_time_s}});
   }
   return finals;
@@ -245,9 +245,9 @@ nlohmann::json adversarial_json(const AdversarialReport& worst) {
           {"attitude_spread", worst.attitude_spread},
           {"attitude_claimed", worst.attitude_claimed},
           {"attitude_tightness", worst.attitude_claimed / worst.attitude_spread},
-          {"omega_spread", vec_json(worst.omega_spread)},
-          {"omega_claimed", vec_json(worst.omega_claimed)},
-          {"omega_tightness", vec_json(worst.omega_claimed.cwiseQuotient(worst.omega_spread))},
+          {"omega_spread", io::json_array(worst.omega_spread)},
+          {"omega_claimed", io::json_array(worst.omega_claimed)},
+          {"omega_tightness", io::json_array(Vec3(worst.omega_claimed.cwiseQuotient(worst.omega_spread)))},
           {"wall_time_s", worst.wall_time_s}};
 }
 

@@ -120,7 +120,11 @@ double command_error_bound(const RobustMarginInputs& in) noexcept {
   return in.kp * in.attitude_noise + in.kd * in.rate_error + in.quantisation_error;
 }
 
-RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
+namespace {
+
+/// The inputs of compute_robust_margin checked: gains, flight loop, delay, finite non-negative
+/// error bounds, ε_Γ ∈ (0, 2), 0 < Γ_top ≤ k_p(2 − ε_Γ) (docs/pet-erg.md, section 13).
+void require_valid_inputs(const RobustMarginInputs& in) {
   require_robust(positive_finite(in.kp) && positive_finite(in.kd), "kp and kd must be positive and finite");
   require_robust(positive_finite(in.control_period), "needs the flight loop: control_period > 0");
   require_robust(in.delay_periods == 0 || in.delay_periods == 1, "delay_periods must be 0 or 1");
@@ -133,25 +137,42 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
           "epsilon_gamma must lie in (0, 2)");
   require_robust(positive_finite(in.gamma_top) && in.gamma_top <= in.kp * (2.0 - in.epsilon_gamma) * (1.0 + 1e-12),
           "gamma_top must be positive and at most kp (2 - epsilon_gamma)");
-  const lie::Vec3 moments = lie::symmetric_eigenvalues(in.J);
-  const double lmin = moments(0);
-  const double lmax = moments(2);
-  require_robust(positive_finite(lmin) && positive_finite(lmax), "the inertia must be positive definite");
+}
 
-  RobustMargin m;
+/// The inertia's extreme moments and the bounds on the level set {V ≤ Γ_top} the margin uses.
+struct LevelSet {
+  double lmin{0.0};       ///< λ_min(J)
+  double lmax{0.0};       ///< λ_max(J)
+  double phi_top{0.0};    ///< the largest φ on it
+  double theta_top{0.0};  ///< the largest attitude-error angle on it
+  double gyro{0.0};       ///< ½(λ_max − λ_min): ‖Jω × ω‖ ≤ gyro ‖ω‖²
+  double H{0.0};          ///< ‖A h‖ of the wheels
+};
+
+/// λ_min, λ_max of J (refused unless positive definite) and, into m, ω_max and s_max on
+/// {V ≤ Γ_top}: ½λ_min‖ω‖² ≤ V, k_p φ ≤ V, ‖s‖² = φ(2 − φ).
+LevelSet level_set(const RobustMarginInputs& in, RobustMargin& m) {
+  const lie::Vec3 moments = lie::symmetric_eigenvalues(in.J);
+  LevelSet g;
+  g.lmin = moments(0);
+  g.lmax = moments(2);
+  require_robust(positive_finite(g.lmin) && positive_finite(g.lmax), "the inertia must be positive definite");
+  g.phi_top = std::min(in.gamma_top / in.kp, 2.0 - in.epsilon_gamma);
+  m.omega_max = std::sqrt(2.0 * in.gamma_top / g.lmin);
+  m.s_max = g.phi_top >= 1.0 ? 1.0 : std::sqrt(g.phi_top * (2.0 - g.phi_top));
+  g.theta_top = std::acos(std::clamp(1.0 - g.phi_top, -1.0, 1.0));
+  g.gyro = 0.5 * (g.lmax - g.lmin);
+  g.H = in.wheel_momentum_max;
+  return g;
+}
+
+/// The torque-error budget w̄ into m (docs/pet-erg.md, section 13, "Error budget"): sensors,
+/// quantisation, the staleness of the held torque, the delayed command's older R_g, disturbance.
+void error_budget(const RobustMarginInputs& in, const LevelSet& g, RobustMargin& m) {
   const double kp = in.kp;
   const double kd = in.kd;
   const double h = in.control_period;
   const int d = in.delay_periods;
-  // Bounds on {V ≤ Γ_top}: ½λ_min‖ω‖² ≤ V, k_p φ ≤ V, ‖s‖² = φ(2 − φ).
-  const double phi_top = std::min(in.gamma_top / kp, 2.0 - in.epsilon_gamma);
-  m.omega_max = std::sqrt(2.0 * in.gamma_top / lmin);
-  m.s_max = phi_top >= 1.0 ? 1.0 : std::sqrt(phi_top * (2.0 - phi_top));
-  const double theta_top = std::acos(std::clamp(1.0 - phi_top, -1.0, 1.0));
-  const double gyro = 0.5 * (lmax - lmin);  // ‖Jω × ω‖ ≤ ½(λ_max − λ_min)‖ω‖²
-  const double H = in.wheel_momentum_max;
-
-  // The torque-error budget (docs/pet-erg.md, section 13, "Error budget").
   m.sensor_error = kp * in.attitude_noise + kd * in.rate_error;
   m.quantisation_error = in.quantisation_error;
   m.command_error = command_error_bound(in);
@@ -159,10 +180,10 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
   // The applied torque is the quantised command of a state in {V ≤ Γ_top}: its PD torque is at
   // most √(2k_p + 2k_d²/λ_min) √Γ_top (the loose bound of docs/pet-erg.md section 2), plus e_cmd.
   const double applied = std::min(in.applied_torque_max,
-                                  std::sqrt(2.0 * kp + 2.0 * kd * kd / lmin) * std::sqrt(in.gamma_top) +
+                                  std::sqrt(2.0 * kp + 2.0 * kd * kd / g.lmin) * std::sqrt(in.gamma_top) +
                                       m.command_error);
   const double omega_dot_max =
-      (gyro * m.omega_max * m.omega_max + H * m.omega_max + applied + in.disturbance) / lmin;
+      (g.gyro * m.omega_max * m.omega_max + g.H * m.omega_max + applied + in.disturbance) / g.lmin;
   const double torque_rate_max = kp * m.omega_max + kd * omega_dot_max;  // ‖d/dt τ_PD‖ ≤ this
   m.hold_error = (1.0 + d) * h * torque_rate_max;
   if (d == 0) {
@@ -176,11 +197,18 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     m.reference_lag_error = d * kp * m.max_reference_step;
   }
   m.torque_error = m.disturbance + m.command_error + m.hold_error + m.reference_lag_error;
-  const double wbar = m.torque_error;
+}
 
-  // ε: a = k_d − ελ_max > 0, δ = ε√(λ_max/k_p) < 1 and 4ab > c² with c = ε(k_d + gyro ω_max + H)
-  // + k_p β (the bias term k_p ωᵀ(I − B)s of V̇, ‖I − B‖ ≤ β).
-  const double C = kd + gyro * m.omega_max + H;
+/// ε of W = V − ε ωᵀJ s chosen on a grid to minimise Γ_min/(1 − δ), with a = k_d − ελ_max > 0,
+/// δ = ε√(λ_max/k_p) < 1 and 4ab > c², c = ε(k_d + gyro ω_max + H) + k_p β (the bias term
+/// k_p ωᵀ(I − B)s of V̇, ‖I − B‖ ≤ β); then Γ_min of the chosen ε, certified, into m
+/// (docs/pet-erg.md, section 13). Refused when no ε gives a strict Lyapunov function.
+void choose_epsilon(const RobustMarginInputs& in, const LevelSet& g, RobustMargin& m) {
+  const double kp = in.kp;
+  const double kd = in.kd;
+  const double lmax = g.lmax;
+  const double wbar = m.torque_error;
+  const double C = kd + g.gyro * m.omega_max + g.H;
   const double bias_coupling = kp * 2.0 * std::sin(0.5 * std::min(in.attitude_bias, std::numbers::pi));
   const double eps_max = std::min({kd / lmax, std::sqrt(kp / lmax), 4.0 * kp * kd / (4.0 * kp * lmax + C * C)});
   double best_score = std::numeric_limits<double>::infinity();
@@ -190,7 +218,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     const double a = kd - eps * lmax;
     const double b = eps * kp;
     const double c = eps * C + bias_coupling;
-    const double unit = level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - phi_top), eps * lmax, kSearchCells, 0);
+    const double unit = level_bound(a, b, c, eps, 0.5 * lmax, kp / (2.0 - g.phi_top), eps * lmax, kSearchCells, 0);
     if (!std::isfinite(unit) || !(delta < 1.0)) continue;
     const double gamma_min = wbar * wbar * unit;
     const double score = gamma_min / (1.0 - delta);
@@ -205,7 +233,7 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
     }
   }
   if (m.epsilon > 0.0) {
-    m.gamma_min = wbar * wbar * ultimate_level_bound(m.a, m.b, m.c, m.epsilon, 0.5 * lmax, kp / (2.0 - phi_top),
+    m.gamma_min = wbar * wbar * ultimate_level_bound(m.a, m.b, m.c, m.epsilon, 0.5 * lmax, kp / (2.0 - g.phi_top),
                                                      m.epsilon * lmax);
   }
   require_robust(m.epsilon > 0.0, "no strict Lyapunov function W = V - eps w^T J s for kp = " + four_digits(kp) +
@@ -214,13 +242,25 @@ RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
                                                           four_digits(bias_coupling) + " N m (beta = " + four_digits(in.attitude_bias) +
                                                           " rad): reduce the bias bound or raise kd"
                                                     : ": raise kd"));
+}
+
+}  // namespace
+
+RobustMargin compute_robust_margin(const RobustMarginInputs& in) {
+  require_valid_inputs(in);
+  RobustMargin m;
+  const LevelSet g = level_set(in, m);
+  error_budget(in, g, m);
+  choose_epsilon(in, g, m);
+  const double kp = in.kp;
   const double sr = in.attitude_noise;
   const double sw = in.rate_error;
-  m.measurement_margin = lmax * (m.omega_max * sw + 0.5 * sw * sw) +
-                         kp * sr * std::min(1.0, theta_top + sr) +
-                         m.epsilon * lmax * (sw * (m.s_max + sr) + m.omega_max * sr);
-  const double pd_torque_max = kp * m.s_max + kd * m.omega_max;
-  m.start_allowance = d * h * (in.disturbance + pd_torque_max) * (m.omega_max + m.epsilon * m.s_max);
+  m.measurement_margin = g.lmax * (m.omega_max * sw + 0.5 * sw * sw) +
+                         kp * sr * std::min(1.0, g.theta_top + sr) +
+                         m.epsilon * g.lmax * (sw * (m.s_max + sr) + m.omega_max * sr);
+  const double pd_torque_max = kp * m.s_max + in.kd * m.omega_max;
+  m.start_allowance = in.delay_periods * in.control_period * (in.disturbance + pd_torque_max) *
+                      (m.omega_max + m.epsilon * m.s_max);
   return m;
 }
 

@@ -1,27 +1,12 @@
 #include "attiguard/io/csv_writer.hpp"
 
-#include <array>
-#include <charconv>
 #include <cstring>
 #include <stdexcept>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/core/shortest_number.hpp"
 
 namespace attiguard::io {
-
-namespace {
-void append_double(std::string& line, double value) {
-  std::array<char, 32> buf{};
-  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), value);
-  line.append(buf.data(), res.ptr);
-}
-}  // namespace
-
-std::string format_double(double value) {
-  std::string s;
-  append_double(s, value);
-  return s;
-}
 
 CsvWriter::CsvWriter(const std::filesystem::path& path, std::vector<std::string> columns)
     : path_(path), columns_(std::move(columns)) {
@@ -50,7 +35,7 @@ void CsvWriter::row(std::span<const double> values) {
     if (i) {
       line_.push_back(',');
     }
-    append_double(line_, values[i]);
+    append_shortest(line_, values[i]);
   }
   line_.push_back('\n');
   out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));

@@ -42,7 +42,4 @@ class CsvWriter {
   long rows_{0};
 };
 
-/// Formats one double as std::to_chars does (shortest round-trip form).
-[[nodiscard]] std::string format_double(double value);
-
 }  // namespace attiguard::io

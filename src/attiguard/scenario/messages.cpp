@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "attiguard/io/csv_writer.hpp"
+#include "attiguard/core/shortest_number.hpp"
 
 namespace attiguard::scenario::detail {
 
-std::string format_number(double x) { return io::format_double(x); }
+std::string format_number(double x) { return shortest_number(x); }
 
 std::string quoted(std::string_view s, char quote) {
   std::string out(1, quote);

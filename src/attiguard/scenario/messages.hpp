@@ -13,7 +13,7 @@
 namespace attiguard::scenario::detail {
 
 /// Shortest decimal text that reads back as `x` ("-1", "0.05", "1e-09"), and "nan", "inf",
-/// "-inf" for the non-finite values: io::format_double, the number form of the CSV outputs.
+/// "-inf" for the non-finite values: shortest_number (core/shortest_number.hpp).
 [[nodiscard]] std::string format_number(double x);
 
 /// `s` between `quote` characters, with backslash, the quote, and control characters escaped so

@@ -12,8 +12,8 @@
 #include <utility>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/governor/governor_design.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
-#include "attiguard/governor/polytope_torque_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
 #include "attiguard/scenario/robust_margin_setup.hpp"
@@ -123,6 +123,90 @@ void parse_adversary(const TableReader& t, dynamics::DisturbanceKind kind,
   adversary.weight = t.number_or("adversary_weight", 0.5, NumberRule::range(0.0, 1.0));
 }
 
+/// The disturbance keys of [imperfections] (docs/pet-erg.md, section 11): kind, bound (its rate
+/// build-up over the duration, bound·T/λ_min(J), below the flight loop's Nyquist rate π/T_c:
+/// docs/scenario-format.md, "Bounds of [imperfections]"), axis, period, and the adversary.
+void parse_disturbance(const TableReader& t, double control_period, double duration, const Mat3& J,
+                       std::uint64_t seed, sim::PetErgImperfections& im) {
+  dynamics::DisturbanceTorque& d = im.disturbance;
+  d.kind = enum_or(t, "disturbance", dynamics::kDisturbanceKindNames, dynamics::DisturbanceKind::none);
+  d.bound = t.number_or("disturbance_bound", 0.0, NumberRule::non_negative());
+  if (d.kind != dynamics::DisturbanceKind::none && !(d.bound > 0.0)) {
+    t.fail(t.has("disturbance_bound") ? "disturbance_bound" : "disturbance",
+           "a disturbance needs disturbance_bound > 0 [N m]");
+  }
+  const double nyquist = std::numbers::pi / control_period;
+  const double lambda_min = lie::lambda_min(J);
+  if (const double most = nyquist * lambda_min / duration; !(d.bound <= most)) {
+    t.fail("disturbance_bound",
+           "at most " + detail::format_number(most) + " N m, got " + detail::format_number(d.bound) +
+               ": the rate it builds over the duration, disturbance_bound x duration / "
+               "lambda_min(J), must stay below the flight loop's Nyquist rate pi/control_period = " +
+               detail::format_number(nyquist) + " rad/s");
+  }
+  if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
+  d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
+  d.hold = control_period;
+  d.seed = seed;
+  parse_adversary(t, d.kind, im.adversary);
+}
+
+/// Refuses at `key` an error of bias + noise that is not below `most` (docs/scenario-format.md,
+/// "Bounds of [imperfections]"); `why` names the limit, with a parenthesised reason after it.
+void refuse_error_bound(const TableReader& t, std::string_view key, double bias, double noise, double most,
+                        std::string_view unit, std::string_view why) {
+  if (bias + noise < most) return;
+  const std::string_view what = key.ends_with("bound") ? "the bias bound + noise"
+                                : key.ends_with("noise") ? "bias + noise" : "the bias";
+  const std::size_t note = why.find(" (");
+  t.fail(key, std::string(what) + " must stay below " + std::string(why.substr(0, note)) + " = " +
+                  detail::format_number(most) + " " + std::string(unit) +
+                  (note == std::string_view::npos ? "" : std::string(why.substr(note))) + ", got " +
+                  detail::format_number(bias + noise));
+}
+
+constexpr double kMaxAttitudeError = 0.5 * std::numbers::pi;
+constexpr std::string_view kAttitudeWhy = "pi/2 (beyond it the measured attitude may lie in the "
+                                          "other hemisphere)";
+constexpr std::string_view kRateWhy = "the flight loop's Nyquist rate pi/control_period";
+
+/// The sensor keys of [imperfections] and the bias bounds the robust margins assume (docs/pet-erg.md,
+/// sections 11 and 13): attitude errors below π/2, rate errors below the Nyquist rate, each
+/// bound at least its bias's norm (norms without overflow, stableNorm, each compared with its
+/// limit before any is combined).
+void parse_sensor(const TableReader& t, double nyquist, std::uint64_t seed, sim::PetErgImperfections& im) {
+  dynamics::AttitudeSensor& s = im.sensor;
+  if (t.has("attitude_bias")) s.attitude_bias_b = t.vector3("attitude_bias");
+  s.attitude_noise = t.number_or("attitude_noise", 0.0, NumberRule::non_negative());
+  if (t.has("rate_bias")) s.rate_bias_b = t.vector3("rate_bias");
+  s.rate_noise = t.number_or("rate_noise", 0.0, NumberRule::non_negative());
+  s.seed = seed;
+  const double attitude_bias = s.attitude_bias_b.stableNorm();
+  const double rate_bias = s.rate_bias_b.stableNorm();
+  refuse_error_bound(t, t.has("attitude_bias") || !t.has("attitude_noise") ? "attitude_bias" : "attitude_noise",
+                     attitude_bias, 0.0, kMaxAttitudeError, "rad", kAttitudeWhy);
+  if (t.has("attitude_noise")) {
+    refuse_error_bound(t, "attitude_noise", attitude_bias, s.attitude_noise, kMaxAttitudeError, "rad", kAttitudeWhy);
+  }
+  refuse_error_bound(t, "rate_bias", rate_bias, 0.0, nyquist, "rad/s", kRateWhy);
+  refuse_error_bound(t, "rate_noise", rate_bias, s.rate_noise, nyquist, "rad/s", kRateWhy);
+  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{attitude_bias}, NumberRule::non_negative());
+  if (im.attitude_bias_bound < attitude_bias) {
+    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(attitude_bias) + " rad");
+  }
+  if (t.has("attitude_bias_bound")) {
+    refuse_error_bound(t, "attitude_bias_bound", im.attitude_bias_bound, s.attitude_noise, kMaxAttitudeError, "rad",
+                       kAttitudeWhy);
+  }
+  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{rate_bias}, NumberRule::non_negative());
+  if (im.rate_bias_bound < rate_bias) {
+    t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(rate_bias) + " rad/s");
+  }
+  if (t.has("rate_bias_bound")) {
+    refuse_error_bound(t, "rate_bias_bound", im.rate_bias_bound, s.rate_noise, nyquist, "rad/s", kRateWhy);
+  }
+}
+
 /// [imperfections] (docs/pet-erg.md, section 11; docs/scenario-format.md, "pet_erg"): only for
 /// the flight loop (control_period > 0). Every magnitude is bounded where it enters
 /// (docs/scenario-format.md, "pet_erg", "Bounds of [imperfections]"): rate errors below the
@@ -140,78 +224,8 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   }
   sim::PetErgImperfections im;
   const auto seed = static_cast<std::uint64_t>(t.integer_or("seed", 0, 0, 1L << 62));
-  dynamics::DisturbanceTorque& d = im.disturbance;
-  d.kind = enum_or(t, "disturbance", dynamics::kDisturbanceKindNames, dynamics::DisturbanceKind::none);
-  d.bound = t.number_or("disturbance_bound", 0.0, NumberRule::non_negative());
-  if (d.kind != dynamics::DisturbanceKind::none && !(d.bound > 0.0)) {
-    t.fail(t.has("disturbance_bound") ? "disturbance_bound" : "disturbance",
-           "a disturbance needs disturbance_bound > 0 [N m]");
-  }
-  // The rate the disturbance can build up over the duration, bound·T/λ_min(J), stays below the
-  // Nyquist rate π/T_c of the flight loop (docs/scenario-format.md, "Bounds of [imperfections]").
-  const double nyquist = std::numbers::pi / control_period;
-  const double lambda_min =
-      lie::lambda_min(J);
-  if (const double most = nyquist * lambda_min / duration; !(d.bound <= most)) {
-    t.fail("disturbance_bound",
-           "at most " + detail::format_number(most) + " N m, got " + detail::format_number(d.bound) +
-               ": the rate it builds over the duration, disturbance_bound x duration / "
-               "lambda_min(J), must stay below the flight loop's Nyquist rate pi/control_period = " +
-               detail::format_number(nyquist) + " rad/s");
-  }
-  if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
-  d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
-  d.hold = control_period;
-  d.seed = seed;
-  parse_adversary(t, d.kind, im.adversary);
-  dynamics::AttitudeSensor& s = im.sensor;
-  if (t.has("attitude_bias")) s.attitude_bias_b = t.vector3("attitude_bias");
-  s.attitude_noise = t.number_or("attitude_noise", 0.0, NumberRule::non_negative());
-  if (t.has("rate_bias")) s.rate_bias_b = t.vector3("rate_bias");
-  s.rate_noise = t.number_or("rate_noise", 0.0, NumberRule::non_negative());
-  s.seed = seed;
-  // Norms without overflow (stableNorm), each compared with its limit before any is combined.
-  const double attitude_bias = s.attitude_bias_b.stableNorm();
-  const double rate_bias = s.rate_bias_b.stableNorm();
-  constexpr double kMaxAttitudeError = 0.5 * std::numbers::pi;
-  const auto bound_error = [&t](std::string_view key, double bias, double noise, double most,
-                                std::string_view unit, std::string_view why) {
-    if (bias + noise < most) return;
-    const std::string_view what = key.ends_with("bound") ? "the bias bound + noise"
-                                  : key.ends_with("noise") ? "bias + noise" : "the bias";
-    const std::size_t note = why.find(" (");
-    t.fail(key, std::string(what) + " must stay below " + std::string(why.substr(0, note)) +
-                    " = " + detail::format_number(most) + " " + std::string(unit) +
-                    (note == std::string_view::npos ? "" : std::string(why.substr(note))) +
-                    ", got " + detail::format_number(bias + noise));
-  };
-  const std::string_view attitude_why = "pi/2 (beyond it the measured attitude may lie in the "
-                                        "other hemisphere)";
-  const std::string_view rate_why = "the flight loop's Nyquist rate pi/control_period";
-  bound_error(t.has("attitude_bias") || !t.has("attitude_noise") ? "attitude_bias"
-                                                                  : "attitude_noise",
-              attitude_bias, 0.0, kMaxAttitudeError, "rad", attitude_why);
-  if (t.has("attitude_noise")) {
-    bound_error("attitude_noise", attitude_bias, s.attitude_noise, kMaxAttitudeError, "rad",
-                attitude_why);
-  }
-  bound_error("rate_bias", rate_bias, 0.0, nyquist, "rad/s", rate_why);
-  bound_error("rate_noise", rate_bias, s.rate_noise, nyquist, "rad/s", rate_why);
-  im.attitude_bias_bound = t.number_or("attitude_bias_bound", DerivedDefault{attitude_bias}, NumberRule::non_negative());
-  if (im.attitude_bias_bound < attitude_bias) {
-    t.fail("attitude_bias_bound", "below the norm of attitude_bias, " + detail::format_number(attitude_bias) + " rad");
-  }
-  if (t.has("attitude_bias_bound")) {
-    bound_error("attitude_bias_bound", im.attitude_bias_bound, s.attitude_noise,
-                kMaxAttitudeError, "rad", attitude_why);
-  }
-  im.rate_bias_bound = t.number_or("rate_bias_bound", DerivedDefault{rate_bias}, NumberRule::non_negative());
-  if (im.rate_bias_bound < rate_bias) {
-    t.fail("rate_bias_bound", "below the norm of rate_bias, " + detail::format_number(rate_bias) + " rad/s");
-  }
-  if (t.has("rate_bias_bound")) {
-    bound_error("rate_bias_bound", im.rate_bias_bound, s.rate_noise, nyquist, "rad/s", rate_why);
-  }
+  parse_disturbance(t, control_period, duration, J, seed, im);
+  parse_sensor(t, std::numbers::pi / control_period, seed, im);
   im.delay_periods = static_cast<int>(t.integer_or("delay_periods", 0, 0, 1));
   im.torque_quantum = t.number_or("torque_quantum", 0.0, NumberRule::non_negative());
   // τ/q must be an exact integer of double precision for |τ| ≤ τ_max: q ≥ τ_max 2^-52.
@@ -225,7 +239,9 @@ sim::PetErgImperfections parse_imperfections(const TableReader& t, double contro
   return im;
 }
 
-/// [[wheels]] (docs/pet-erg.md, section 12): the array, and its polytope's Γ_d into params.
+/// [[wheels]] (docs/pet-erg.md, section 12): the array; the refusals of its polytope
+/// (governor::wheel_polytope: the flight loop it needs, an array that does not span, a Γ_d that
+/// cannot be computed) located at the first [[wheels]] table.
 void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
   if (!root.has("wheels")) return;
   const std::vector<TableReader> entries = root.array_of_tables("wheels");
@@ -241,53 +257,28 @@ void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
     }
     sc.wheels.push_back(w);
   }
-  if (!(sc.control_period > 0.0)) {
-    entries.front().fail_here("reaction wheels act in the flight loop: set [control] control_period > 0");
-  }
   try {
-    const dynamics::ReactionWheelArray array(sc.wheels);
-    std::vector<Vec3> rows;
-    std::vector<double> limits;
-    for (int i = 0; i < array.count(); ++i) {
-      rows.push_back(array.allocation_row(i));
-      limits.push_back(array.wheel(i).torque_max);
-    }
-    const governor::TorqueThreshold t = governor::compute_polytope_torque_threshold(
-        sc.params.gains.kp, sc.params.gains.kd, sc.params.J, rows, limits, &sc.wheel_binding);
-    sc.params.polytope_gamma_d = t.gamma_d;
-    sc.wheel_gamma_d_upper = t.upper_bound;
+    (void)governor::wheel_polytope(sim::design_inputs(sc));
   } catch (const SetupError& e) {
     entries.front().fail_here(e.what());
   }
 }
 
-/// `[control] margins` (docs/pet-erg.md, section 13).
-enum class Margins { nominal, robust };
-constexpr NameTable<Margins, 2> kMarginNames{{{{Margins::nominal, "nominal"}, {Margins::robust, "robust"}}}};
-
-}  // namespace
-
-sim::PetErgScenario parse_pet_erg(const Document& doc) {
-  sim::PetErgScenario sc;
-  const TableReader root(doc);
-  declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation", "imperfections", "wheels", "tune"});
-  sc.name = read_header(root, doc, "pet_erg");
-  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
+/// The governor block, `margins`, `control_period` of [control] (docs/scenario-format.md,
+/// "pet_erg"); returns the [control] reader.
+TableReader parse_control(const TableReader& root, sim::PetErgScenario& sc) {
   const TableReader control =
       parse_governor_block(root, sc.params, {"control_period", "margins", "robust_reference_step"});
-  const Margins margins = enum_or(control, "margins", kMarginNames, Margins::nominal);
-  control.used_only_if("robust_reference_step", margins == Margins::robust,
+  sc.margins = enum_or(control, "margins", governor::kMarginsNames, governor::Margins::nominal);
+  control.used_only_if("robust_reference_step", sc.margins == governor::Margins::robust,
                        "only with margins = \"robust\"");
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
+  return control;
+}
 
-  const TableReader body = root.table("body");
-  declare(body, {"inertia"});
-  sc.params.J = body.inertia("inertia");
-  check_torque_threshold(control, sc.params);
-
-  sc.cones = parse_cones(root);
-
+/// [initial] (docs/scenario-format.md, "pet_erg"): attitude, omega_b, reference (default the
+/// attitude). Returns its reader when the table is there.
+std::optional<TableReader> parse_initial(const TableReader& root, sim::PetErgScenario& sc) {
   std::optional<TableReader> initial = root.optional_table("initial");
   if (initial) {
     declare(*initial, {"attitude", "omega_b", "reference"});
@@ -301,10 +292,12 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   } else {
     sc.R_g0 = sc.R0_ib;
   }
+  return initial;
+}
 
-  const TableReader desired = root.table("desired");
-  sc.desired = parse_desired(desired, sc.cones, sc.R0_ib);
-
+/// [simulation] (docs/scenario-format.md, "pet_erg"): duration, outputs, integrator, tolerance,
+/// and the budgets of steps and rows.
+void parse_simulation(const TableReader& root, sim::PetErgScenario& sc) {
   const TableReader simulation = root.table("simulation");
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
                        "max_step", "convergence_tolerance"});
@@ -319,12 +312,10 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   require_step_budget(simulation, sc.integrator, sc.duration);
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
-  if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
-    sc.imperfections =
-        parse_imperfections(*im, sc.control_period, sc.duration, sc.params.J, sc.params.tau_max);
-  }
-  parse_wheels(root, sc);
-  if (margins == Margins::robust) set_robust_margins(control, sc);
+}
+
+/// The control steps and governor samples of the run within the step budget.
+void check_step_counts(const TableReader& root, const TableReader& control, const sim::PetErgScenario& sc) {
   if (sc.control_period > 0.0) {
     require_at_most_duration(control, "control_period", sc.control_period, sc.duration);
     require_countable(control, "control_period", sc.control_period, sc.duration, kMaxRunSteps,
@@ -334,11 +325,24 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     require_countable(root.table_or_empty("erg"), "sampling_period", sc.params.Ts, sc.duration,
                       kMaxRunSteps, "governor samples");
   }
-  root.finish();
+}
 
-  // Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and
-  // V(R_0, ω_0, R_g(0)) ≤ Γ(R_g(0)).
-  const governor::AttitudeGovernor gov = make_governor(root, "", sim::governor_params(sc), sim::governor_cones(sc));
+/// The tables the admissibility checks locate their refusals at.
+struct AdmissibilityTables {
+  const TableReader& root;
+  const std::optional<TableReader>& initial;
+  const TableReader& desired;
+};
+
+/// Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and
+/// V(R_0, ω_0, R_g(0)) ≤ Γ(R_g(0)); with robust margins the targets and the start of
+/// docs/pet-erg.md, section 13. The same checks for every mode: `governor = "none"` runs the very
+/// scenario the governor would run, to show what the governor prevents.
+void check_admissible(const AdmissibilityTables& t, const sim::PetErgScenario& sc,
+                      const governor::GovernorDesign& design) {
+  const TableReader& root = t.root;
+  const std::optional<TableReader>& initial = t.initial;
+  const governor::AttitudeGovernor gov = make_governor(root, "", design.params, design.cones);
   const auto fail_initial = [&](std::string_view preferred, const std::string& message) {
     if (initial && initial->has(preferred)) {
       initial->fail(preferred, message);
@@ -351,20 +355,18 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
     }
     root.fail_here(message + " ([initial] defaults to the identity attitude at rest)");
   };
-  // The same checks for every mode: `governor = "none"` runs the very scenario the governor
-  // would run, to show what the governor prevents.
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
     const double c = governor::cone_cosine(sc.cones[i], sc.R_g0);
     if (!(c > sc.cones[i].delta)) {
       fail_initial("reference", cone_domain_message(root, i, sc.cones[i], c, initial && initial->has("reference")));
     }
   }
-  if (sc.params.robust) {
-    check_robust_desired(desired, gov, sc);
-    if (const std::string problem = robust_initial_problem(gov, sc); !problem.empty()) {
+  if (design.params.robust) {
+    check_robust_desired(t.desired, gov, sc, design);
+    if (const std::string problem = robust_initial_problem(gov, sc, *design.params.robust); !problem.empty()) {
       fail_initial("omega_b", problem);
     }
-    return sc;
+    return;
   }
   const double V0 = gov.lyapunov(sc.R0_ib, sc.omega0_b, sc.R_g0);
   const double G0 = gov.gamma(sc.R_g0);
@@ -374,6 +376,41 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
                                 detail::format_number(gov.gamma_d()) + ", Gamma_g = " + detail::format_number(gov.gamma_g(sc.R_g0)) +
                                 ")");
   }
+}
+
+}  // namespace
+
+sim::PetErgScenario parse_pet_erg(const Document& doc) {
+  sim::PetErgScenario sc;
+  const TableReader root(doc);
+  declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
+                 "control", "erg", "cones", "simulation", "imperfections", "wheels", "tune"});
+  sc.name = read_header(root, doc, "pet_erg");
+  check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
+  const TableReader control = parse_control(root, sc);
+
+  const TableReader body = root.table("body");
+  declare(body, {"inertia"});
+  sc.params.J = body.inertia("inertia");
+  check_torque_threshold(control, sc.params);
+
+  sc.cones = parse_cones(root);
+  const std::optional<TableReader> initial = parse_initial(root, sc);
+  const TableReader desired = root.table("desired");
+  sc.desired = parse_desired(desired, sc.cones, sc.R0_ib);
+  parse_simulation(root, sc);
+  if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
+    sc.imperfections =
+        parse_imperfections(*im, sc.control_period, sc.duration, sc.params.J, sc.params.tau_max);
+  }
+  parse_wheels(root, sc);
+  if (sc.margins == governor::Margins::robust) {
+    sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
+  }
+  const governor::GovernorDesign design = located_design(control, sc);
+  check_step_counts(root, control, sc);
+  root.finish();
+  check_admissible({root, initial, desired}, sc, design);
   return sc;
 }
 

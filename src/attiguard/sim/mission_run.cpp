@@ -3,7 +3,6 @@
 
 #include "attiguard/sim/mission_run.hpp"
 
-#include <numbers>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +10,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/lie/quaternion.hpp"
+#include "attiguard/sim/cone_json.hpp"
 
 namespace attiguard::sim {
 
@@ -161,9 +161,7 @@ nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& 
   summary["tau_max"] = sc.params.tau_max;
   nlohmann::json cones = nlohmann::json::array();
   for (const auto& c : sc.cones) {
-    cones.push_back({{"axis_b", {c.axis_b(0), c.axis_b(1), c.axis_b(2)}},
-                     {"direction_i", {c.direction_i(0), c.direction_i(1), c.direction_i(2)}},
-                     {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi}});
+    cones.push_back(cone_json(c));
   }
   summary["cones"] = cones;
   nlohmann::json wps = nlohmann::json::array();

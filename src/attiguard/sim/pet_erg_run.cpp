@@ -14,6 +14,7 @@
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
+#include "attiguard/sim/cone_json.hpp"
 #include "attiguard/sim/held_actuation.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
@@ -93,7 +94,7 @@ void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R
                     PetErgResult& r) {
   r.reference_distance_left = lie::distance(R_g_end, R_d_end);
   r.active_cones.clear();
-  const std::vector<governor::ConeConstraint>& cones = governor_cones(sc);  // the field's bands
+  const std::vector<governor::ConeConstraint>& cones = r.design.cones;  // the field's bands
   for (std::size_t i = 0; i < cones.size(); ++i) {
     if (governor::cone_cosine(cones[i], R_g_end) < cones[i].zeta) {
       r.active_cones.push_back(static_cast<int>(i));
@@ -115,9 +116,11 @@ void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R
 
 namespace {
 
-/// The figures known before the run starts.
-PetErgResult initial_result(const PetErgScenario& sc, const governor::AttitudeGovernor& gov) {
+/// The figures known before the run starts, with the governor's design.
+PetErgResult initial_result(const PetErgScenario& sc, governor::GovernorDesign design,
+                            const governor::AttitudeGovernor& gov) {
   PetErgResult r;
+  r.design = std::move(design);
   r.gamma_d = gov.gamma_d();
   r.gamma_d_upper = gov.torque_threshold().upper_bound;
   r.gamma_d_loose = gov.gamma_d_loose();
@@ -217,9 +220,10 @@ PetErgState pet_erg_initial_state(const PetErgScenario& sc) {
 
 /// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
 PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
-  const governor::AttitudeGovernor gov(governor_params(sc), sc.cones);
+  governor::GovernorDesign design = design_governor(sc);
+  const governor::AttitudeGovernor gov(design.params, sc.cones);
   const dynamics::RigidBody body(sc.params.J);
-  PetErgResult r = initial_result(sc, gov);
+  PetErgResult r = initial_result(sc, std::move(design), gov);
   PetErgState y = pet_erg_initial_state(sc);
   bool flag = sc.params.mode == GovernorMode::continuous;
 
@@ -255,12 +259,6 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   const integrate::IntegrationStats stats = integrate_over_stops(sc, field, y, monitor, at_stop, on_output);
   finish(sc, y, stats, r);
   return r;
-}
-
-/// The governor of the flight loop (docs/pet-erg.md, sections 10 and 13): built with the
-/// bounded reference step and, with robust margins, the reduced limits and tightened cones.
-governor::AttitudeGovernor pet_erg_flight_governor(const PetErgScenario& sc) {
-  return governor::AttitudeGovernor(governor_params(sc), governor_cones(sc));
 }
 
 /// The disturbance d on the plant of the flight loop (docs/pet-erg.md, section 11): the
@@ -300,7 +298,7 @@ void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, Pet
   if (!actuation.has_wheels()) return;
   const dynamics::WheelVector h = actuation.momenta(sc.duration);
   r.final_wheel_momentum.assign(h.begin(), h.begin() + actuation.wheels().count());
-  r.gamma_d_upper = std::min(r.gamma_d_upper, sc.wheel_gamma_d_upper);
+  r.gamma_d_upper = std::min(r.gamma_d_upper, r.design.wheels.gamma_d_upper);
 }
 
 /// control_period > 0: the flight loop. AttitudeGovernor::step runs at t_k = k·h with the state
@@ -309,11 +307,14 @@ void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, Pet
 /// loop", sections 11-13).
 class PetErgFlightLoop {
  public:
-  explicit PetErgFlightLoop(const PetErgScenario& sc)
+  explicit PetErgFlightLoop(const PetErgScenario& sc) : PetErgFlightLoop(sc, design_governor(sc)) {}
+  PetErgFlightLoop(const PetErgScenario& sc, governor::GovernorDesign design)
       : sc_(sc),
-        gov_(pet_erg_flight_governor(sc)),
+        // The governor of the flight loop (docs/pet-erg.md, sections 10 and 13): the bounded
+        // reference step and, with robust margins, the reduced limits and tightened cones.
+        gov_(design.params, design.cones),
         body_(sc.params.J),
-        r_(initial_result(sc, gov_)),
+        r_(initial_result(sc, std::move(design), gov_)),
         actuation_(sc.imperfections, sc.wheels),
         disturbance_(sc),
         // With robust margins the level W is that of the attitude seen through the bias, R B
@@ -422,8 +423,6 @@ nlohmann::json finite_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
-nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v(0), v(1), v(2)}); }
-
 /// The [imperfections] of the run, echoed in summary.json (docs/pet-erg.md, section 11).
 nlohmann::json imperfections_json(const PetErgImperfections& im) {
   nlohmann::json j = {{"disturbance", std::string(dynamics::kDisturbanceKindNames.name(im.disturbance.kind))},
@@ -443,7 +442,8 @@ nlohmann::json imperfections_json(const PetErgImperfections& im) {
 
 /// The robust margin of the run (docs/pet-erg.md, section 13), echoed in summary.json.
 nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
-  const governor::RobustMargin& m = *sc.params.robust;
+  const governor::GovernorDesign& design = r.design;
+  const governor::RobustMargin& m = *design.params.robust;
   // The guarantee assumes the wheels' momenta within their limits (checked, not governed).
   const bool momentum_held = sc.wheels.empty() || r.max_wheel_momentum_ratio <= 1.0;
   return {{"assumption_wheel_momentum_within_limits", momentum_held},
@@ -458,8 +458,8 @@ nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
             {"hold", m.hold_error},
             {"reference_lag", m.reference_lag_error}}},
           {"command_error", m.command_error},
-          {"tau_max_reduced", sc.robust_tau_max},
-          {"wheel_gamma_d_reduced", sc.wheels.empty() ? nlohmann::json(nullptr) : nlohmann::json(sc.robust_polytope_gamma_d)},
+          {"tau_max_reduced", design.tau_max_reduced},
+          {"wheel_gamma_d_reduced", sc.wheels.empty() ? nlohmann::json(nullptr) : nlohmann::json(design.wheel_gamma_d_reduced)},
           {"gamma_min", m.gamma_min},
           {"measurement_margin", m.measurement_margin},
           {"max_reference_step", std::isfinite(m.max_reference_step) ? nlohmann::json(m.max_reference_step) : nlohmann::json(nullptr)},
@@ -512,15 +512,15 @@ void add_run_settings(nlohmann::json& j, const PetErgScenario& sc) {
   j["duration"] = sc.duration;
   j["control_period"] = sc.control_period;
   j["imperfections"] = imperfections_json(sc.imperfections);
-  j["margins"] = sc.params.robust ? "robust" : "nominal";
+  j["margins"] = std::string(governor::kMarginsNames.name(sc.margins));
 }
 
 /// The reaction wheels' figures (docs/pet-erg.md, section 12), with wheels only.
 void add_wheels(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   if (sc.wheels.empty()) return;
   j["wheels"] = static_cast<long>(sc.wheels.size());
-  j["wheel_gamma_d"] = sc.params.polytope_gamma_d;
-  j["wheel_binding"] = sc.wheel_binding;
+  j["wheel_gamma_d"] = r.design.wheels.gamma_d;
+  j["wheel_binding"] = r.design.wheels.binding;
   j["max_wheel_torque_ratio"] = r.max_wheel_torque_ratio;
   j["wheel_torque_limit_satisfied"] = r.max_wheel_torque_ratio <= 1.0;
   j["max_wheel_momentum_ratio"] = r.max_wheel_momentum_ratio;
@@ -568,7 +568,7 @@ void add_constraints(nlohmann::json& j, const PetErgScenario& sc, const PetErgRe
                                                 r.max_wheel_momentum_ratio <= 1.0);
   j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
   // With robust margins the level is W (docs/pet-erg.md, section 13), of the true state.
-  j["lyapunov_level"] = sc.params.robust ? "W" : "V";
+  j["lyapunov_level"] = sc.margins == governor::Margins::robust ? "W" : "V";
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
 }
@@ -609,13 +609,12 @@ void add_counters(nlohmann::json& j, const PetErgResult& r) {
 nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {
   nlohmann::json j = nlohmann::json::array();
   for (const governor::ConeConstraint& c : sc.cones) {
-    j.push_back({{"axis_b", vec_json(c.axis_b)},
-                 {"direction_i", vec_json(c.direction_i)},
-                 {"theta_c_deg", c.theta_c * 180.0 / std::numbers::pi},
-                 {"cos_theta_c", c.cos_theta_c},
-                 {"delta", c.delta},
-                 {"zeta", c.zeta},
-                 {"repulsive_gain", c.repulsive_gain}});
+    nlohmann::json cone = cone_json(c);
+    cone["cos_theta_c"] = c.cos_theta_c;
+    cone["delta"] = c.delta;
+    cone["zeta"] = c.zeta;
+    cone["repulsive_gain"] = c.repulsive_gain;
+    j.push_back(std::move(cone));
   }
   return j;
 }
@@ -625,7 +624,7 @@ nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {
 nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) {
   nlohmann::json j;
   add_run_settings(j, sc);
-  if (sc.params.robust) j["robust"] = robust_json(sc, r);
+  if (r.design.params.robust) j["robust"] = robust_json(sc, r);
   add_wheels(j, sc, r);
   add_governor_figures(j, sc, r);
   add_constraints(j, sc, r);

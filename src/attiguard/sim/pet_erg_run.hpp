@@ -28,6 +28,9 @@ using PetErgRowObserver = std::function<void(double t, const PetErgState& y, con
 /// Figures of one simulation (every "max"/"min" is over t = 0, every accepted integrator step
 /// and every stop instant).
 struct PetErgResult {
+  /// What the governor flew with: governor::design of the scenario's inputs (sim::design_governor;
+  /// docs/pet-erg.md, sections 12-13), whose figures summary.json reports.
+  governor::GovernorDesign design;
   double gamma_d{0.0};           ///< Γ_d (certified lower bound)
   double gamma_d_upper{0.0};     ///< attained value bracketing the exact Γ_d from above
   double gamma_d_loose{0.0};     ///< closed-form bound on Γ_d

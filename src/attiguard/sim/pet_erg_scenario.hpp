@@ -12,6 +12,7 @@
 #include "attiguard/dynamics/disturbance_torque.hpp"
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/governor_design.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/lie/so3.hpp"
@@ -33,10 +34,17 @@ struct PetErgImperfections {
 };
 
 /// Everything a `pet_erg` run needs, validated (scenario::parse_pet_erg also checks the
-/// admissibility of the initial state, PET-ERG paper Theorem 1).
+/// admissibility of the initial state, PET-ERG paper Theorem 1): the user's quantities only.
+/// What the governor runs with (reduced limits, wheel polytope, robust margin, tightened cones)
+/// is derived from them by design_governor(sc), which the simulator calls at the start of a run.
 struct PetErgScenario {
   std::string name;
-  governor::GovernorParams params;            ///< governor, [body], [control], [erg]
+  /// governor, [body], [control], [erg]: the user's parameters, the inputs of the governor's
+  /// design (design_governor below; the simulator builds its governor from that design). Its
+  /// robust and polytope_gamma_d are no inputs: scenario::parse_pet_erg copies the design's into
+  /// them for the readers that predate governor::design (docs/architecture.md, "Where the
+  /// configuration structs live"); nothing in sim/ reads them.
+  governor::GovernorParams params;
   std::vector<governor::ConeConstraint> cones;  ///< [[cones]] (at most governor::kMaxCones)
   lie::Mat3 R0_ib{lie::Mat3::Identity()};     ///< [initial] attitude
   lie::Vec3 omega0_b{lie::Vec3::Zero()};      ///< [initial] omega_b [rad/s]
@@ -48,41 +56,27 @@ struct PetErgScenario {
   double control_period{0.0};
   PetErgImperfections imperfections;          ///< [imperfections] (flight loop only)
   /// [[wheels]] (flight loop only; docs/pet-erg.md, section 12): empty = the body torque is
-  /// applied directly. With wheels, params.polytope_gamma_d is their polytope's Γ_d.
+  /// applied directly.
   std::vector<dynamics::ReactionWheel> wheels;
-  double wheel_gamma_d_upper{0.0};  ///< attained value above the polytope's exact Γ_d
-  int wheel_binding{-1};            ///< the wheel whose limit binds the polytope's Γ_d
-  /// [control] margins = "robust" (docs/pet-erg.md, section 13): params.robust is set and the
-  /// governor runs with the torque limits reduced by its command error: τ_max − e_cmd and the
-  /// wheel polytope with each u_max,i − ‖r_i‖ e_cmd (whose Γ_d is robust_polytope_gamma_d).
-  double robust_tau_max{0.0};
-  double robust_polytope_gamma_d{0.0};
-  /// With robust margins, the cones the governor enforces: each θ_c tightened by the attitude
-  /// bias bound and its repulsive band moved inwards as Γ_min needs (section 13). `cones` stay
-  /// the true constraints, on which the margins are reported.
-  std::vector<governor::ConeConstraint> robust_cones;
+  /// [control] margins (docs/pet-erg.md, section 13): with "robust" the governor runs with the
+  /// robust margin computed from `imperfections`' bounds, reduced torque limits and tightened
+  /// cones (governor::design); `cones` stay the true constraints, on which margins are reported.
+  governor::Margins margins{governor::Margins::nominal};
+  double robust_reference_step{0.0};  ///< [control] robust_reference_step [rad] (0: derived)
   double duration{0.0};                       ///< [simulation] duration [s]
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
 };
 
-/// The cones the governor of a run enforces: `cones`, or with robust margins `robust_cones`
-/// (docs/pet-erg.md, section 13).
-[[nodiscard]] inline const std::vector<governor::ConeConstraint>& governor_cones(const PetErgScenario& sc) {
-  return sc.params.robust ? sc.robust_cones : sc.cones;
-}
+/// The user's quantities of `sc` as the inputs of the governor's design (docs/pet-erg.md,
+/// sections 12-13): sc.params, cones, wheels, control_period, margins, robust_reference_step and
+/// the bounds of `imperfections` (disturbance bound, bias bounds, noises, delay, quantum).
+[[nodiscard]] governor::GovernorDesignInputs design_inputs(const PetErgScenario& sc);
 
-/// The parameters the governor of a run is built with (docs/pet-erg.md, sections 10 and 13): in
-/// the flight loop the bounded reference step; with robust margins the reduced torque limits.
-[[nodiscard]] inline governor::GovernorParams governor_params(const PetErgScenario& sc) {
-  governor::GovernorParams p = sc.params;
-  p.bounded_step = sc.control_period > 0.0;
-  if (p.robust) {
-    p.tau_max = sc.robust_tau_max;
-    if (!sc.wheels.empty()) p.polytope_gamma_d = sc.robust_polytope_gamma_d;
-  }
-  return p;
-}
+/// What the governor of a run is built with and reports: governor::design(design_inputs(sc))
+/// [docs/pet-erg.md, sections 12-13]. Computed from the inputs on every call (set-up code: it
+/// allocates; with robust margins it takes milliseconds). Throws SetupError as governor::design.
+[[nodiscard]] governor::GovernorDesign design_governor(const PetErgScenario& sc);
 
 }  // namespace attiguard::sim

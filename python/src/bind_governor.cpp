@@ -1,5 +1,5 @@
 /// @file bind_governor.cpp
-/// The PET-ERG flight-loop object (PET-ERG paper, eqs. (3)-(6)), its cones (2b), the PD law (3)
+/// The PET-ERG flight-loop object [PET-ERG eqs. (3)-(6)], its cones [PET-ERG eq. (2b)], the PD law [PET-ERG eq. (3)]
 /// and the rigid body (Euler's equation), step-able from Python.
 
 #include <array>
@@ -311,17 +311,17 @@ std::vector<double> margins_of(const GovernorOutput& o) {
 
 namespace {
 
-/// Cone (constraint (2b) of the PET-ERG paper), keep_in_cone, keep_out_cone.
+/// Cone (constraint [PET-ERG eq. (2b)]), keep_in_cone, keep_out_cone.
 void bind_cones(py::module_& m) {
   py::class_<ConeConstraint>(m, "Cone",
-                             "Pointing constraint (2b) of the PET-ERG paper: a_cᵀ R a_b ≥ cos θ_c.")
+                             "Pointing constraint [PET-ERG eq. (2b)]: a_cᵀ R a_b ≥ cos θ_c.")
       .def_readonly("axis_b", &ConeConstraint::axis_b)
       .def_readonly("direction_i", &ConeConstraint::direction_i)
       .def_readonly("theta_c", &ConeConstraint::theta_c)
       .def("margin", [](const ConeConstraint& c, const Mat3& R) {
              return governor::pointing_margin(c, scenario::checked_rotation_matrix(R, "R", "Cone.margin()"));
            },
-           py::arg("R"), "a_cᵀ R a_b − cos θ_c (≥ 0: constraint (2b) holds).")
+           py::arg("R"), "a_cᵀ R a_b − cos θ_c (≥ 0: constraint [PET-ERG eq. (2b)] holds).")
       .def("__repr__", [](const ConeConstraint& c) {
         return "Cone(theta_c=" + std::to_string(c.theta_c) + ")";
       });
@@ -333,7 +333,7 @@ void bind_cones(py::module_& m) {
         py::arg("axis_b"), py::arg("direction_i"), py::kw_only(), py::arg("half_angle_deg") = py::none(),
         py::arg("half_angle_rad") = py::none(), py::arg("delta_offset") = 0.05,
         py::arg("zeta_offset") = 0.05, py::arg("repulsive_gain") = 1.0,
-        "Keep-in cone (2b) of half-angle θ_c around direction_i (PET-ERG paper): exactly one of "
+        "Keep-in cone [PET-ERG eq. (2b)] of half-angle θ_c around direction_i (PET-ERG paper): exactly one of "
         "half_angle_deg, half_angle_rad; checked as a [[cones]] table of a scenario file.");
   m.def("keep_out_cone",
         [](const Vec3& a_b, const Vec3& avoid_i, std::optional<double> deg, std::optional<double> rad,
@@ -343,12 +343,12 @@ void bind_cones(py::module_& m) {
         py::arg("axis_b"), py::arg("direction_i"), py::kw_only(), py::arg("half_angle_deg") = py::none(),
         py::arg("half_angle_rad") = py::none(), py::arg("delta_offset") = 0.05,
         py::arg("zeta_offset") = 0.05, py::arg("repulsive_gain") = 1.0,
-        "Keep-out cone of half-angle α around direction_i, as the keep-in cone (2b) of π − α: "
+        "Keep-out cone of half-angle α around direction_i, as the keep-in cone [PET-ERG eq. (2b)] of π − α: "
         "exactly one of half_angle_deg, half_angle_rad; checked as a [[cones]] table.");
 
 }
 
-/// pd_torque (PD law (3)), RigidBody (Euler's equation (1)), GovernorOutput.
+/// pd_torque (PD law [PET-ERG eq. (3)]), RigidBody (Euler's [PET-ERG eq. (1)]), GovernorOutput.
 void bind_pd_body_output(py::module_& m) {
   m.def("pd_torque",
         [](const Mat3& R, const Vec3& w, const Mat3& R_g, double kp, double kd) {
@@ -361,7 +361,7 @@ void bind_pd_body_output(py::module_& m) {
           return control::pd_torque(R_ok, w_ok, R_g_ok, control::PdGains{kp_ok, kd_ok});
         },
         py::arg("R"), py::arg("omega_b"), py::arg("R_g"), py::arg("kp"), py::arg("kd"),
-        "PD law (3) of the PET-ERG paper: τ = k_p sk(RᵀR_g)^∨ − k_d ω.");
+        "PD law [PET-ERG eq. (3)]: τ = k_p sk(RᵀR_g)^∨ − k_d ω.");
 
   py::class_<dynamics::RigidBody>(m, "RigidBody", "Rigid body: J ω̇ = Jω × ω + τ, Ṙ = R ω̂.")
       .def(py::init([](const Mat3& J) {
@@ -380,7 +380,7 @@ void bind_pd_body_output(py::module_& m) {
                                            scenario::checked_vector3(tau, "tau_b", kLabel));
            },
            py::arg("omega_b"), py::arg("tau_b"),
-           "ω̇ = J⁻¹(Jω × ω + τ) (Euler's equation, PET-ERG paper (1)); finite arguments.")
+           "ω̇ = J⁻¹(Jω × ω + τ) (Euler's equation, [PET-ERG eq. (1)]); finite arguments.")
       .def("kinetic_energy",
            [](const dynamics::RigidBody& b, const Vec3& w) {
              return b.kinetic_energy(scenario::checked_vector3(w, "omega_b", "RigidBody.kinetic_energy()"));
@@ -448,7 +448,7 @@ void def_governor_flight_loop(GovernorClass& cls) {
                   "docs/pet-erg.md, sections 10-13). ValueError naming file, line and key on a "
                   "bad file.")
       .def("reset", &PyGovernor::reset, py::arg("t0"), py::arg("R_g0"),
-           "Start at t0 with R_g(t0) = R_g0 (PET-ERG paper, Sec. IV-A).")
+           "Start at t0 with R_g(t0) = R_g0 [PET-ERG Sec. IV-A].")
       .def("step", &PyGovernor::step, py::arg("t"), py::arg("R"), py::arg("omega_b"),
            py::arg("R_d"),
            "One control step (PET-ERG paper, Fig. 1): returns a GovernorOutput with τ (3). "
@@ -456,7 +456,7 @@ void def_governor_flight_loop(GovernorClass& cls) {
            "non-finite omega_b (ValueError naming the argument).");
 }
 
-/// The stateless evaluations of (3)-(6), the robust margin and the design figures, the state.
+/// The stateless evaluations of [PET-ERG eqs. (3)-(6)], the robust margin and the design figures, the state.
 void def_governor_evaluations(GovernorClass& cls) {
   cls
       .def("evaluate", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g,
@@ -471,7 +471,7 @@ void def_governor_evaluations(GovernorClass& cls) {
                                           scenario::checked_rotation_matrix(R_d, "R_d", "Governor.evaluate()"), flag);
            },
            py::arg("R"), py::arg("omega_b"), py::arg("R_g"), py::arg("R_d"), py::arg("flag"),
-           "Stateless evaluation of (3)-(6) at one state.")
+           "Stateless evaluation of [PET-ERG eqs. (3)-(6)] at one state.")
       .def("lyapunov", [](const PyGovernor& g, const Mat3& R, const Vec3& w, const Mat3& R_g) {
              const State x = checked_state(R, w, R_g, "Governor.lyapunov()");
              return g.governor().lyapunov(x.R, x.omega_b, x.R_g);
@@ -522,7 +522,7 @@ void def_governor_evaluations(GovernorClass& cls) {
 void bind_governor(py::module_& m) {
   bind_cones(m);
   bind_pd_body_output(m);
-  GovernorClass cls(m, "Governor", "PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper.");
+  GovernorClass cls(m, "Governor", "PD law [PET-ERG eq. (3)] + [PET-ERG eqs. (5)-(6)] / ERG [PET-ERG eq. (4)].");
   def_governor_flight_loop(cls);
   def_governor_evaluations(cls);
 }

@@ -1,6 +1,6 @@
 /// @file bind_guidance.cpp
-/// The waypoint mission state machine (waypoint paper, Algorithm 1, (13)-(30)) and its
-/// quaternion PID (27), step-able from Python.
+/// The waypoint mission state machine (Algorithm 1, [Waypoint eqs. (13)-(30)]) and its
+/// quaternion PID [Waypoint eq. (27)], step-able from Python.
 
 #include <memory>
 #include <string>
@@ -92,7 +92,7 @@ py::dict command_dict(const guidance::MissionCommand& c) {
 }  // namespace
 
 void bind_guidance(py::module_& m) {
-  py::class_<control::QuaternionPid>(m, "QuaternionPid", "Quaternion PID (27) of the waypoint paper.")
+  py::class_<control::QuaternionPid>(m, "QuaternionPid", "Quaternion PID [Waypoint eq. (27)].")
       .def(py::init([](double kp, double ki, double kd) {
              constexpr const char* kLabel = "QuaternionPid()";
              control::QuaternionPidGains g;
@@ -115,12 +115,12 @@ void bind_guidance(py::module_& m) {
              return out.tau_b;
            },
            py::arg("q_ib"), py::arg("omega_b"), py::arg("q_id"), py::arg("omega_d_d"), py::arg("dt"),
-           "One sample of (27): returns the torque command τ_b [N·m]. Unit quaternions (1e-9), "
+           "One sample of [Waypoint eq. (27)]: returns the torque command τ_b [N·m]. Unit quaternions (1e-9), "
            "finite rates, dt finite and > 0 (ValueError naming the argument).")
       .def("reset", &control::QuaternionPid::reset);
 
   py::class_<OwnedMission>(m, "Mission",
-                           "Waypoint guidance state machine (waypoint paper, Algorithm 1).")
+                           "Waypoint guidance state machine [Waypoint Alg. 1].")
       .def(py::init(&make_mission), py::arg("waypoints"), py::arg("mass") = 100.0,
            py::arg("t_max") = 20.0, py::arg("f_max") = 0.5, py::arg("cruise_speed") = 100.0,
            py::arg("pointing_tolerance") = 1e-6, py::arg("kp") = 20.0, py::arg("ki") = 2.0,
@@ -137,7 +137,7 @@ void bind_guidance(py::module_& m) {
              return command_dict(o.mission->step(in));
            },
            py::arg("R"), py::arg("omega_b"), py::arg("p_i"), py::arg("v_i"), py::arg("dt"),
-           "One control sample: mode, desired attitude (23)-(24), thrust (13)/(16), RCT (28)-(30), τ (27).")
+           "One control sample: mode, desired attitude [Waypoint eqs. (23)-(24)], thrust (13)/(16), RCT [Waypoint eqs. (28)-(30)], τ (27).")
       .def_property_readonly("mode", [](const OwnedMission& o) { return guidance::mode_name(o.mission->mode()); })
       .def_property_readonly("waypoint", [](const OwnedMission& o) { return o.mission->waypoint(); })
       .def_property_readonly("done", [](const OwnedMission& o) { return o.mission->done(); });

@@ -66,7 +66,7 @@ void bind_lie(py::module_& m) {
         py::arg("R1"), py::arg("R2"), "Bi-invariant distance ‖log(R1ᵀ R2)‖ [rad].");
   m.def("phi", [](const Mat3& R) { return lie::phi(checked_rotation_matrix(R, "R", "phi()")); },
         py::arg("R"),
-        "Attitude error function φ(R) = ½ tr(I − R) = 1 − cos θ (PET-ERG paper, Sec. III-A).");
+        "Attitude error function φ(R) = ½ tr(I − R) = 1 − cos θ [PET-ERG Sec. III-A].");
   m.def("project_to_so3",
         [](const Mat3& M) {
           const Mat3 ok = checked_matrix3(M, "M", "project_to_so3()");
@@ -89,7 +89,7 @@ void bind_lie(py::module_& m) {
   m.def("quat_to_rotation",
         [](const Quat& q) { return lie::quat_to_rotation(checked_unit_quaternion(q, "q", "quat_to_rotation()")); },
         py::arg("q"),
-        "R(q) = I + 2η S(ε) + 2 S(ε)², q = [η, ε] scalar first, unit to 1e-9 (waypoint paper, (1)).");
+        "R(q) = I + 2η S(ε) + 2 S(ε)², q = [η, ε] scalar first, unit to 1e-9 [Waypoint eq. (1)].");
   m.def("rotation_to_quat",
         [](const Mat3& R) { return lie::rotation_to_quat(checked_rotation_matrix(R, "R", "rotation_to_quat()")); },
         py::arg("R"), "Unit quaternion [η, ε] of R, η ≥ 0.");
@@ -98,7 +98,7 @@ void bind_lie(py::module_& m) {
           return lie::quat_multiply(checked_unit_quaternion(p, "p", "quat_multiply()"),
                                     checked_unit_quaternion(q, "q", "quat_multiply()"));
         },
-        py::arg("p"), py::arg("q"), "Hamilton product p ⊗ q of unit quaternions (waypoint paper, (12)).");
+        py::arg("p"), py::arg("q"), "Hamilton product p ⊗ q of unit quaternions [Waypoint eq. (12)].");
   m.def("quat_conjugate",
         [](const Quat& q) { return lie::quat_conjugate(checked_unit_quaternion(q, "q", "quat_conjugate()")); },
         py::arg("q"), "Conjugate [η, −ε] of a unit quaternion.");

@@ -175,7 +175,7 @@ std::string check_document(const py::object& source) {
   return std::string(handler.name);
 }
 
-/// ConReach on a `reach` scenario (reach paper, Algorithm 1); returns reach.json's text.
+/// ConReach on a `reach` scenario [ConReach Alg. 1]; returns reach.json's text.
 /// VerificationFailure propagates after reach.json has been written.
 std::string reach_document(const py::object& source, const std::string& out_dir) {
   const scenario::Document doc = document_of(source);

@@ -9,14 +9,14 @@ namespace attiguard::python {
 /// attiguard::Error and its subclasses as Python exceptions with the CLI's messages
 /// (docs/conventions.md, "Exit codes").
 void bind_errors(pybind11::module_& m);
-/// SO(3) and quaternion helpers (conventions: hat, exp, log, φ, d; waypoint paper eqs. (1), (12)).
+/// SO(3) and quaternion helpers (conventions: hat, exp, log, φ, d; [Waypoint eqs. (1), (12)]).
 void bind_lie(pybind11::module_& m);
 /// Scenario runs: `attiguard run` / `check` / `reach` on a scenario file or a dict; run() fills
 /// numpy arrays through a row sink (bind_run.cpp).
 void bind_run(pybind11::module_& m);
-/// PET-ERG governor (PET-ERG paper eqs. (3)-(6)), PD law (3) and the rigid body.
+/// PET-ERG governor [PET-ERG eqs. (3)-(6)], PD law [PET-ERG eq. (3)] and the rigid body.
 void bind_governor(pybind11::module_& m);
-/// Waypoint guidance (waypoint paper Algorithm 1) and the quaternion PID (27).
+/// Waypoint guidance [Waypoint Alg. 1] and the quaternion PID [Waypoint eq. (27)].
 void bind_guidance(pybind11::module_& m);
 
 }  // namespace attiguard::python

@@ -109,12 +109,12 @@ nlohmann::json run_reach(const Document& doc, const RunOptions&) {
 }
 
 constexpr std::array<KindHandler, 5> registry{{
-    {"rigid_body", "rigid body: torque-free, constant torque, or PD law (3) to a fixed attitude",
+    {"rigid_body", "rigid body: torque-free, constant torque, or PD law [PET-ERG eq. (3)] to a fixed attitude",
      &check_kind<&scenario::parse_rigid_body>,
      &run_kind<&scenario::parse_rigid_body, &sim::simulate_rigid_body, &sim::rigid_body_summary>,
      &rigid_body_outcome_line, &rigid_body_numerical_hint},
     {"pet_erg",
-     "constrained attitude control: PD law (3) with the PET-ERG (5)-(6), the ERG (4), or none",
+     "constrained attitude control: PD law [PET-ERG eq. (3)] with [PET-ERG eqs. (5)-(6)], the ERG [PET-ERG eq. (4)], or none",
      &check_kind<&scenario::parse_pet_erg>,
      &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>,
      &pet_erg_outcome_line, &pet_erg_numerical_hint},

@@ -1,12 +1,12 @@
 #pragma once
 /// @file quaternion_pid.hpp
-/// The quaternion PID attitude law of the waypoint paper, eqs. (25)-(27), sampled.
+/// The quaternion PID attitude law of [Waypoint eqs. (25)-(27)], sampled.
 
 #include "attiguard/lie/quaternion.hpp"
 
 namespace attiguard::control {
 
-/// Gains of eq. (27) of the waypoint paper.
+/// Gains of [Waypoint eq. (27)].
 struct QuaternionPidGains {
   double kp{20.0};  ///< proportional gain [N·m]
   double ki{2.0};   ///< integral gain [N·m/s]
@@ -26,14 +26,14 @@ struct QuaternionPidGains {
 /// Output of one controller sample.
 struct QuaternionPidOutput {
   lie::Vec3 tau_b{lie::Vec3::Zero()};   ///< commanded torque [N·m] (the plant applies any wheel limit)
-  lie::Quat q_db{lie::Quat(1.0, 0.0, 0.0, 0.0)};  ///< attitude error q_{d,b}, eq. (25)
+  lie::Quat q_db{lie::Quat(1.0, 0.0, 0.0, 0.0)};  ///< attitude error q_{d,b}, [Waypoint eq. (25)]
   lie::Vec3 omega_db_b{lie::Vec3::Zero()};  ///< ω^b_{d,b} = ω^b_{i,b} − R_d^b ω^d_{i,d} (26)
-  lie::Vec3 eps_dot{lie::Vec3::Zero()};     ///< ε̇_{d,b} from the kinematics (26)
+  lie::Vec3 eps_dot{lie::Vec3::Zero()};     ///< ε̇_{d,b} from the kinematics [Waypoint eq. (26)]
 };
 
-/// Sampled PID (27) of the waypoint paper: τ^b = −k_p ε − k_i ∫ε − k_d ε̇ with ε = vec(q_{d,b}),
-/// q_{d,b} = q_{d,i} ⊗ q_{i,b} (eq. (25); erratum, docs/errata.md, Waypoint 8: the paper prints q_{d,i} ⊗ q_{i,d} = 1) and
-/// ε̇ = ½ (η I + S(ε)) ω^b_{d,b} from (26). The integral is a forward-Euler sum over the sample
+/// Sampled PID [Waypoint eq. (27)]: τ^b = −k_p ε − k_i ∫ε − k_d ε̇ with ε = vec(q_{d,b}),
+/// q_{d,b} = q_{d,i} ⊗ q_{i,b} ([Waypoint eq. (25)]; erratum, docs/errata.md, Waypoint 8: the paper prints q_{d,i} ⊗ q_{i,d} = 1) and
+/// ε̇ = ½ (η I + S(ε)) ω^b_{d,b} from [Waypoint eq. (26)]. The integral is a forward-Euler sum over the sample
 /// period (gated by integral_zone). With QuaternionPidGains::shaped the torque is
 /// S(−k_p ε − k_i ∫ε − k_d ε̇) + ω × (J_max S) ω (docs/waypoint.md, "Tuning", inertia shaping).
 /// Noexcept and allocation-free.
@@ -42,12 +42,12 @@ class QuaternionPid {
   explicit QuaternionPid(const QuaternionPidGains& gains) noexcept : gains_(gains) {}
 
   /// One sample: q_ib, omega_b the measured attitude and rate; q_id, omega_d_d the guidance
-  /// output (23)-(24); dt the time until the next sample (integral update).
+  /// output [Waypoint eqs. (23)-(24)]; dt the time until the next sample (integral update).
   [[nodiscard]] QuaternionPidOutput step(const lie::Quat& q_ib, const lie::Vec3& omega_b,
                                          const lie::Quat& q_id, const lie::Vec3& omega_d_d,
                                          double dt) noexcept;
 
-  /// Clears the integral ∫ε of (27).
+  /// Clears the integral ∫ε of [Waypoint eq. (27)].
   void reset() noexcept { integral_.setZero(); }
   [[nodiscard]] const lie::Vec3& integral() const noexcept { return integral_; }
   [[nodiscard]] const QuaternionPidGains& gains() const noexcept { return gains_; }
@@ -57,7 +57,7 @@ class QuaternionPid {
   lie::Vec3 integral_{lie::Vec3::Zero()};
 };
 
-/// Attitude error q_{d,b} = q_{d,i} ⊗ q_{i,b} (waypoint paper, eq. (25) corrected).
+/// Attitude error q_{d,b} = q_{d,i} ⊗ q_{i,b} ([Waypoint eq. (25)] corrected).
 [[nodiscard]] inline lie::Quat attitude_error(const lie::Quat& q_id, const lie::Quat& q_ib) noexcept {
   return lie::quat_multiply(lie::quat_conjugate(q_id), q_ib);
 }

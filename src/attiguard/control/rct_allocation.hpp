@@ -1,7 +1,7 @@
 #pragma once
 /// @file rct_allocation.hpp
-/// Allocation of a body force to six on/off reaction-control thrusters, waypoint paper
-/// eqs. (29)-(30), and their bang-bang modulation.
+/// Allocation of a body force to six on/off reaction-control thrusters, Waypoint paper
+/// [Waypoint eqs. (29)-(30)], and their bang-bang modulation.
 
 #include <Eigen/Core>
 
@@ -14,10 +14,10 @@ using RctVector = Eigen::Matrix<double, 6, 1>;
 /// The 3×6 allocation matrix.
 using AllocationMatrix = Eigen::Matrix<double, 3, 6>;
 
-/// B of eq. (30): thrusters 1/2 push ±x_b, 3/4 ±y_b, 5/6 ±z_b.
+/// B of [Waypoint eq. (30)]: thrusters 1/2 push ±x_b, 3/4 ±y_b, 5/6 ±z_b.
 [[nodiscard]] AllocationMatrix rct_allocation_matrix() noexcept;
 
-/// T = B† f of eq. (29) (B† = Bᵀ(BBᵀ)⁻¹ = ½ Bᵀ): the minimum-norm solution, which has a negative
+/// T = B† f of [Waypoint eq. (29)] (B† = Bᵀ(BBᵀ)⁻¹ = ½ Bᵀ): the minimum-norm solution, which has a negative
 /// entry for every non-zero force component — not realisable by thrusters that only push.
 [[nodiscard]] RctVector rct_pseudo_inverse(const lie::Vec3& f_b) noexcept;
 
@@ -26,10 +26,10 @@ using AllocationMatrix = Eigen::Matrix<double, 3, 6>;
 /// exactly; each T_j ≤ f_max when |f_k| ≤ f_max. Allocation-free.
 [[nodiscard]] RctVector rct_allocate(const lie::Vec3& f_b) noexcept;
 
-/// Bang-bang modulation after (29) (waypoint paper, Sec. V-B): thruster j is on (f_max) when T_j ≥ threshold·f_max, else off (0).
+/// Bang-bang modulation after [Waypoint eq. (29)] [Waypoint Sec. V-B]: thruster j is on (f_max) when T_j ≥ threshold·f_max, else off (0).
 [[nodiscard]] RctVector rct_bang_bang(const RctVector& T, double f_max, double threshold) noexcept;
 
-/// Body force f^b_RCT = B T of thruster forces T (waypoint paper, eq. (30)).
+/// Body force f^b_RCT = B T of thruster forces T [Waypoint eq. (30)].
 [[nodiscard]] lie::Vec3 rct_body_force(const RctVector& T) noexcept;
 
 }  // namespace attiguard::control

@@ -11,7 +11,7 @@ namespace attiguard::dynamics {
 using AttitudeState = integrate::ProductState<1, 3>;
 
 /// Time derivative of (R, ω) under torque τ_b as a body-velocity tangent [ω; ω̇]:
-/// Ṙ = R ω̂, J ω̇ = (J ω) × ω + τ (PET-ERG paper, eq. (1)). Allocation-free.
+/// Ṙ = R ω̂, J ω̇ = (J ω) × ω + τ [PET-ERG eq. (1)]. Allocation-free.
 [[nodiscard]] inline AttitudeState::Tangent attitude_derivative(const RigidBody& body,
                                                                 const AttitudeState& y,
                                                                 const Vec3& tau_b) noexcept {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file rigid_body.hpp
-/// Rigid-body attitude plant Ṙ = R ω̂, J ω̇ = (J ω) × ω + τ (PET-ERG paper, eq. (1)).
+/// Rigid-body attitude plant Ṙ = R ω̂, J ω̇ = (J ω) × ω + τ [PET-ERG eq. (1)].
 
 #include <optional>
 #include <string>
@@ -30,7 +30,7 @@ class RigidBody {
   /// Largest principal moment λ_max(J).
   [[nodiscard]] double max_principal_moment() const noexcept { return lambda_max_; }
 
-  /// ω̇ = J⁻¹((J ω) × ω + τ) (PET-ERG paper, eq. (1)); allocation-free.
+  /// ω̇ = J⁻¹((J ω) × ω + τ) [PET-ERG eq. (1)]; allocation-free.
   [[nodiscard]] Vec3 angular_acceleration(const Vec3& omega_b, const Vec3& tau_b) const noexcept {
     return J_inv_ * ((J_ * omega_b).cross(omega_b) + tau_b);
   }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file attitude_governor.hpp
-/// The combined flight-loop API of the PET-ERG paper: PD law (3) as the inner loop, the dynamic
+/// The combined flight-loop API of the PET-ERG paper: PD law [PET-ERG eq. (3)] as the inner loop, the dynamic
 /// safety margin with Γ = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)}, the navigation field and the reference
-/// update, either continuous (4), periodic event-triggered (5)-(6), or none (plain PD to R_d).
+/// update, either continuous (4), periodic event-triggered [PET-ERG eqs. (5)-(6)], or none (plain PD to R_d).
 ///
 /// Set-up (the constructor: validation and the offline Γ_d) may throw and allocate nothing after
 /// it returns; every per-step function is noexcept and allocation-free (fixed-capacity cone
@@ -28,9 +28,9 @@ namespace attiguard::governor {
 
 /// Which reference update runs above the PD law.
 enum class GovernorMode {
-  pet,         ///< periodic event-triggered ERG, eqs. (5)-(6) of the PET-ERG paper
-  continuous,  ///< continuous-time ERG, eq. (4) of the PET-ERG paper
-  none,        ///< no governor: the PD law (3) tracks R_d directly (constraints not enforced)
+  pet,         ///< periodic event-triggered ERG, [PET-ERG eqs. (5)-(6)]
+  continuous,  ///< continuous-time ERG, [PET-ERG eq. (4)]
+  none,        ///< no governor: the PD law [PET-ERG eq. (3)] tracks R_d directly (constraints not enforced)
 };
 
 /// Names of GovernorMode in scenario files (`governor = "pet"`), summaries and the Python
@@ -38,16 +38,16 @@ enum class GovernorMode {
 inline constexpr NameTable<GovernorMode, 3> kGovernorModeNames{
     {{{GovernorMode::pet, "pet"}, {GovernorMode::continuous, "continuous"}, {GovernorMode::none, "none"}}}};
 
-/// Parameters of the PD law (3) and the governor (PET-ERG paper, Secs. III–V).
+/// Parameters of the PD law [PET-ERG eq. (3)] and the governor (PET-ERG paper, Secs. III–V).
 struct GovernorParams {
   GovernorMode mode{GovernorMode::pet};
-  control::PdGains gains{5.0, 1.0};  ///< k_p, k_d of (3)
+  control::PdGains gains{5.0, 1.0};  ///< k_p, k_d of [PET-ERG eq. (3)]
   Mat3 J{Mat3::Identity()};          ///< inertia [kg·m²] (V of Sec. III-A, Γ_d)
-  double tau_max{1.0};               ///< τ_max of (2a) [N·m]
-  double kappa{1.0};                 ///< κ of the DSM and of (4), (6)
-  double c_gamma{3.0};               ///< c_Γ > 1 of the trigger (5)
-  double Ts{0.5};                    ///< sampling period T_s of (5)-(6) [s]
-  double epsilon{1e-3};              ///< ε of the normalisation max{‖ρ_n‖, ε} in (4), (6)
+  double tau_max{1.0};               ///< τ_max of [PET-ERG eq. (2a)] [N·m]
+  double kappa{1.0};                 ///< κ of the DSM and of [PET-ERG eqs. (4), (6)]
+  double c_gamma{3.0};               ///< c_Γ > 1 of the trigger [PET-ERG eq. (5)]
+  double Ts{0.5};                    ///< sampling period T_s of [PET-ERG eqs. (5)-(6)] [s]
+  double epsilon{1e-3};              ///< ε of the normalisation max{‖ρ_n‖, ε} in [PET-ERG eqs. (4), (6)]
   double epsilon_gamma{0.1};         ///< ε_Γ ∈ (0, 2) of Γ's cap k_p(2 − ε_Γ)
   /// step() only: the reference move of one control step is at most ‖ρ_n‖ long (it cannot
   /// overshoot the field's equilibrium however large κ(Γ − V) dt is) and is shortened by halving
@@ -69,9 +69,9 @@ struct GovernorParams {
 
 /// Everything the governor knows at one instant (PET-ERG paper notation).
 struct GovernorOutput {
-  Vec3 tau_b{Vec3::Zero()};        ///< PD torque (3) towards R_g [N·m]
+  Vec3 tau_b{Vec3::Zero()};        ///< PD torque [PET-ERG eq. (3)] towards R_g [N·m]
   Mat3 R_g{Mat3::Identity()};      ///< auxiliary reference (R_d itself in mode none)
-  Vec3 xi_g{Vec3::Zero()};         ///< body rate of R_g, Ṙ_g = R_g ξ̂ (eq. (4) or (6)) [rad/s]
+  Vec3 xi_g{Vec3::Zero()};         ///< body rate of R_g, Ṙ_g = R_g ξ̂ ([PET-ERG eq. (4)] or (6)) [rad/s]
   Vec3 rho{Vec3::Zero()};          ///< navigation field ρ_n(R_d, R_g) (Sec. III-B.2)
   double V{0.0};                   ///< Lyapunov function V(R, ω, R_g) (Sec. III-A)
   /// The level compared with Γ: V, or W = V − ε ωᵀJ s with robust margins (docs/pet-erg.md,
@@ -80,51 +80,51 @@ struct GovernorOutput {
   double gamma_d{0.0};             ///< Γ_d (constant)
   double gamma_g{0.0};             ///< Γ_g(R_g) = min over cones (+∞ without cones)
   double gamma{0.0};               ///< Γ(R_g) = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (× (1 − δ) robust)
-  bool trigger{true};              ///< flag of (5) held on the current sampling interval
+  bool trigger{true};              ///< flag of [PET-ERG eq. (5)] held on the current sampling interval
   bool sampled{false};             ///< true when this call evaluated (5) (a sampling instant)
   int cone_count{0};
-  std::array<double, kMaxCones> margins{};  ///< a_cᵀ R a_b − cos θ_c of each cone, eq. (2b)
-  /// Smallest margin of (2b) over the cones (PET-ERG paper, eq. (2b)); +∞ without cones.
+  std::array<double, kMaxCones> margins{};  ///< a_cᵀ R a_b − cos θ_c of each cone, [PET-ERG eq. (2b)]
+  /// Smallest margin of [PET-ERG eq. (2b)] over the cones [PET-ERG eq. (2b)]; +∞ without cones.
   [[nodiscard]] double min_margin() const noexcept;
 };
 
-/// PD law (3) + PET-ERG (5)-(6) / ERG (4) of the PET-ERG paper, as one flight-loop object.
+/// PD law [PET-ERG eq. (3)] + [PET-ERG eqs. (5)-(6)] / ERG [PET-ERG eq. (4)], as one flight-loop object.
 class AttitudeGovernor {
  public:
-  /// Validates the parameters and cones and computes Γ_d offline (PET-ERG paper, Sec. III-B.1).
+  /// Validates the parameters and cones and computes Γ_d offline [PET-ERG Sec. III-B.1].
   /// Throws SetupError (core/errors.hpp) with a one-line reason (set-up code only).
   AttitudeGovernor(const GovernorParams& params, std::span<const ConeConstraint> cones);
 
   // ---- pure functions of the state (PET-ERG paper notation), noexcept and allocation-free ----
 
-  /// V(R, ω, R_g) = ½ωᵀJω + k_p φ(RᵀR_g) (PET-ERG paper, Sec. III-A).
+  /// V(R, ω, R_g) = ½ωᵀJω + k_p φ(RᵀR_g) [PET-ERG Sec. III-A].
   [[nodiscard]] double lyapunov(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
-  /// PD torque τ = k_p sk(RᵀR_g)^∨ − k_d ω (PET-ERG paper, eq. (3)).
+  /// PD torque τ = k_p sk(RᵀR_g)^∨ − k_d ω [PET-ERG eq. (3)].
   [[nodiscard]] Vec3 torque(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// Γ_g(R_g), the minimum over the cones (PET-ERG paper, Sec. III-B.1; +∞ without cones).
   [[nodiscard]] double gamma_g(const Mat3& R_g) const noexcept;
-  /// Γ(R_g) = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1); with robust
+  /// Γ(R_g) = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)} [PET-ERG Sec. III-B.1]; with robust
   /// margins Γ_W = (1 − δ) times it (docs/pet-erg.md, section 13).
   [[nodiscard]] double gamma(const Mat3& R_g) const noexcept;
   /// The level compared with Γ: V, or with robust margins W = V − ε ωᵀJ sk(RᵀR_g)^∨
   /// (docs/pet-erg.md, section 13).
   [[nodiscard]] double level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
-  /// ρ_n(R_d, R_g) = −grad(P_a + Σ P_r) (PET-ERG paper, Sec. III-B.2).
+  /// ρ_n(R_d, R_g) = −grad(P_a + Σ P_r) [PET-ERG Sec. III-B.2].
   [[nodiscard]] Vec3 navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept;
-  /// Trigger condition (5): Γ(R_g) − c_Γ V ≥ 0 (PET-ERG paper, eq. (5)); with robust margins
+  /// Trigger condition [PET-ERG eq. (5)]: Γ(R_g) − c_Γ V ≥ 0 [PET-ERG eq. (5)]; with robust margins
   /// V → W + e_W of the measured state (docs/pet-erg.md, section 13).
   [[nodiscard]] bool trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
                                        const Mat3& R_g) const noexcept;
   /// The full evaluation at one instant with the held trigger flag `flag`: τ (3), V, Γ's, ρ_n,
-  /// the reference rate ξ of (6) in mode pet (of (4) in mode continuous; 0 in mode none, where
-  /// R_g is replaced by R_d) and the margins of (2b) (PET-ERG paper, eqs. (3)-(6)).
+  /// the reference rate ξ of [PET-ERG eq. (6)] in mode pet (of [PET-ERG eq. (4)] in mode continuous; 0 in mode none, where
+  /// R_g is replaced by R_d) and the margins of [PET-ERG eq. (2b)] [PET-ERG eqs. (3)-(6)].
   [[nodiscard]] GovernorOutput evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                         const Mat3& R_d, bool flag) const noexcept;
 
   // ---- the stateful flight loop ----
 
   /// Starts at time t0 with R_g(t0) = R_g0 (the paper uses R_g(t0) = R(t0), Sec. IV-A); the
-  /// first sampling instant of (5) is t0.
+  /// first sampling instant of [PET-ERG eq. (5)] is t0.
   void reset(double t0, const Mat3& R_g0) noexcept;
   /// One control step at time t (non-decreasing across calls) with the measured R, ω and the
   /// current R_d(t) (PET-ERG paper, Fig. 1): moves R_g over [t_prev, t] with the rate of the
@@ -136,17 +136,17 @@ class AttitudeGovernor {
   const GovernorOutput& step(double t, const Mat3& R_ib, const Vec3& omega_b,
                              const Mat3& R_d) noexcept;
 
-  /// The current auxiliary reference R_g of the flight loop (PET-ERG paper, eq. (6)).
+  /// The current auxiliary reference R_g of the flight loop [PET-ERG eq. (6)].
   [[nodiscard]] const Mat3& reference() const noexcept { return R_g_; }
-  /// The trigger flag of (5) held on the current sampling interval (PET-ERG paper, eq. (6)).
+  /// The trigger flag of [PET-ERG eq. (5)] held on the current sampling interval [PET-ERG eq. (6)].
   [[nodiscard]] bool trigger_flag() const noexcept { return flag_; }
-  /// The output of the last step (PET-ERG paper, eqs. (3)-(6)).
+  /// The output of the last step [PET-ERG eqs. (3)-(6)].
   [[nodiscard]] const GovernorOutput& last() const noexcept { return out_; }
 
   // ---- constants ----
-  /// The parameters of (3)-(6) of the PET-ERG paper this governor was built with.
+  /// The parameters of [PET-ERG eqs. (3)-(6)] this governor was built with.
   [[nodiscard]] const GovernorParams& params() const noexcept { return params_; }
-  /// The pointing constraints (2b) of the PET-ERG paper this governor enforces.
+  /// The pointing constraints [PET-ERG eq. (2b)] this governor enforces.
   [[nodiscard]] std::span<const ConeConstraint> cones() const noexcept { return cones_.span(); }
   /// Γ_d (certified lower bound of the exact minimum, PET-ERG paper Sec. III-B.1).
   [[nodiscard]] double gamma_d() const noexcept { return gamma_d_; }
@@ -154,7 +154,7 @@ class AttitudeGovernor {
   [[nodiscard]] const TorqueThreshold& torque_threshold() const noexcept { return threshold_; }
   /// The loose closed-form bound on Γ_d (docs/pet-erg.md).
   [[nodiscard]] double gamma_d_loose() const noexcept { return gamma_d_loose_; }
-  /// The cap k_p(2 − ε_Γ) of Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1).
+  /// The cap k_p(2 − ε_Γ) of Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} [PET-ERG Sec. III-B.1].
   [[nodiscard]] double gamma_cap() const noexcept { return gamma_cap_; }
 
  private:

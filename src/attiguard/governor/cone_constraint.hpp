@@ -1,6 +1,6 @@
 #pragma once
 /// @file cone_constraint.hpp
-/// Geometric pointing constraint a_cᵀ R a_b ≥ cos θ_c (PET-ERG paper, eq. (2b)), keep-in and
+/// Geometric pointing constraint a_cᵀ R a_b ≥ cos θ_c [PET-ERG eq. (2b)], keep-in and
 /// keep-out forms, and the fixed-capacity set of them the governor holds.
 ///
 /// Everything here is allocation-free and noexcept except the validation helper.
@@ -22,7 +22,7 @@ using lie::Vec3;
 /// Most cone constraints one governor holds (storage is a std::array, never the heap).
 inline constexpr int kMaxCones = 16;
 
-/// One pointing constraint (PET-ERG paper, eq. (2b)): the body axis a_b (unit, body frame) must
+/// One pointing constraint [PET-ERG eq. (2b)]: the body axis a_b (unit, body frame) must
 /// stay within the angle θ_c of the inertial direction a_c (unit, inertial frame), i.e.
 /// c(R) := a_cᵀ R a_b ≥ cos θ_c. A keep-out cone of half-angle α around s is a_c = −s,
 /// θ_c = π − α (beyond the paper: docs/pet-erg.md, "Beyond the paper").
@@ -41,7 +41,7 @@ struct ConeConstraint {
   double repulsive_gain{1.0};        ///< k_r of P_r = k_r (ζ − c)²/(c − δ)
 };
 
-/// Keep-in cone of half-angle θ_c around a_c, constraint (2b) of the PET-ERG paper, with the
+/// Keep-in cone of half-angle θ_c around a_c, constraint [PET-ERG eq. (2b)], with the
 /// repulsive levels δ = cos θ_c + delta_offset and ζ = δ + zeta_offset (paper Sec. V uses 0.05
 /// for both). Axes are normalised here.
 [[nodiscard]] inline ConeConstraint keep_in_cone(const Vec3& axis_b, const Vec3& direction_i,
@@ -60,7 +60,7 @@ struct ConeConstraint {
   return c;
 }
 
-/// Keep-out cone of half-angle α around the inertial direction s: (2b) of the PET-ERG paper with
+/// Keep-out cone of half-angle α around the inertial direction s: [PET-ERG eq. (2b)] with
 /// a_c = −s and θ_c = π − α (docs/pet-erg.md, "Beyond the paper").
 [[nodiscard]] inline ConeConstraint keep_out_cone(const Vec3& axis_b, const Vec3& avoid_i,
                                                   double alpha, double delta_offset = 0.05,
@@ -71,12 +71,12 @@ struct ConeConstraint {
 }
 
 /// c(R) = a_cᵀ R a_b, the cosine of the angle between the body axis in inertial coordinates and
-/// a_c (PET-ERG paper, eq. (2b); docs/errata.md, PET-ERG 1a).
+/// a_c ([PET-ERG eq. (2b)]; docs/errata.md, PET-ERG 1a).
 [[nodiscard]] inline double cone_cosine(const ConeConstraint& cone, const Mat3& R_ib) noexcept {
   return cone.direction_i.dot(R_ib * cone.axis_b);
 }
 
-/// Margin of constraint (2b) of the PET-ERG paper: a_cᵀ R a_b − cos θ_c (≥ 0 when satisfied).
+/// Margin of constraint [PET-ERG eq. (2b)]: a_cᵀ R a_b − cos θ_c (≥ 0 when satisfied).
 [[nodiscard]] inline double pointing_margin(const ConeConstraint& cone, const Mat3& R_ib) noexcept {
   return cone_cosine(cone, R_ib) - cone.cos_theta_c;
 }
@@ -110,7 +110,7 @@ struct ConeConstraint {
 }
 
 /// A fixed-capacity list of cone constraints (no heap; at most kMaxCones). Used by the flight
-/// governor (PET-ERG paper, eq. (2b), several constraints: docs/pet-erg.md, "Beyond the paper").
+/// governor ([PET-ERG eq. (2b)], several constraints: docs/pet-erg.md, "Beyond the paper").
 class ConeSet {
  public:
   ConeSet() = default;
@@ -125,21 +125,21 @@ class ConeSet {
   }
   /// Removes every cone.
   void clear() noexcept { count_ = 0; }
-  /// Number of cones (2b) held.
+  /// Number of cones [PET-ERG eq. (2b)] held.
   [[nodiscard]] int size() const noexcept { return count_; }
-  /// True when no cone (2b) is held.
+  /// True when no cone [PET-ERG eq. (2b)] is held.
   [[nodiscard]] bool empty() const noexcept { return count_ == 0; }
-  /// Cone i (0 ≤ i < size()), constraint (2b) of the PET-ERG paper.
+  /// Cone i (0 ≤ i < size()), constraint [PET-ERG eq. (2b)].
   [[nodiscard]] const ConeConstraint& operator[](int i) const noexcept {
     return cones_[static_cast<std::size_t>(i)];
   }
-  /// The held cones (2b) as a span (for Γ_g and ρ_n of the PET-ERG paper, Sec. III-B).
+  /// The held cones [PET-ERG eq. (2b)] as a span (for Γ_g and ρ_n of the PET-ERG paper, Sec. III-B).
   [[nodiscard]] std::span<const ConeConstraint> span() const noexcept {
     return {cones_.data(), static_cast<std::size_t>(count_)};
   }
-  /// Iteration over the held cones (2b).
+  /// Iteration over the held cones [PET-ERG eq. (2b)].
   [[nodiscard]] auto begin() const noexcept { return cones_.begin(); }
-  /// End of the held cones (2b).
+  /// End of the held cones [PET-ERG eq. (2b)].
   [[nodiscard]] auto end() const noexcept { return cones_.begin() + count_; }
 
  private:

@@ -50,7 +50,7 @@ struct GovernorDesignInputs {
   /// mode, gains k_p/k_d, J, τ_max, κ, c_Γ, T_s, ε, ε_Γ of the PET-ERG paper. Its robust,
   /// polytope_gamma_d and bounded_step are outputs of the design: their values here are ignored.
   GovernorParams params;
-  std::vector<ConeConstraint> cones;           ///< the true pointing constraints (2b)
+  std::vector<ConeConstraint> cones;           ///< the true pointing constraints [PET-ERG eq. (2b)]
   std::vector<dynamics::ReactionWheel> wheels;  ///< empty: the body torque is applied directly
   double control_period{0.0};  ///< flight-loop period h [s]; 0: the continuous-time loop
   Margins margins{Margins::nominal};

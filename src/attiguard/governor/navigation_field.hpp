@@ -33,7 +33,7 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return lie::vee(lie::sk(R_g.transpose() * R_d));
 }
 
-/// Gradient of c(R_g) = a_cᵀR_g a_b: g_c = a_b × (R_gᵀa_c), ‖g_c‖ = sin β_g (constraint (2b) of
+/// Gradient of c(R_g) = a_cᵀR_g a_b: g_c = a_b × (R_gᵀa_c), ‖g_c‖ = sin β_g (constraint [PET-ERG eq. (2b)] of
 /// the PET-ERG paper; docs/errata.md, PET-ERG 1d).
 [[nodiscard]] inline Vec3 constraint_gradient(const ConeConstraint& cone, const Mat3& R_g) noexcept {
   return cone.axis_b.cross(R_g.transpose() * cone.direction_i);
@@ -61,12 +61,12 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return -cone.repulsive_gain * (cone.zeta - c) * (cone.zeta + c - 2.0 * cone.delta) / (gap * gap);
 }
 
-/// P_r(R_g) of one cone (PET-ERG paper Sec. III-B.2).
+/// P_r(R_g) of one cone [PET-ERG Sec. III-B.2].
 [[nodiscard]] inline double repulsive_potential(const ConeConstraint& cone, const Mat3& R_g) noexcept {
   return repulsive_potential_of_cosine(cone, cone_cosine(cone, R_g));
 }
 
-/// Repulsive field of one cone ρ_r = −grad P_r = −(dP_r/dc) g_c (PET-ERG paper Sec. III-B.2).
+/// Repulsive field of one cone ρ_r = −grad P_r = −(dP_r/dc) g_c [PET-ERG Sec. III-B.2].
 [[nodiscard]] inline Vec3 repulsive_field(const ConeConstraint& cone, const Mat3& R_g) noexcept {
   const double c = cone_cosine(cone, R_g);
   if (c >= cone.zeta) {
@@ -85,7 +85,7 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return p;
 }
 
-/// Navigation field ρ_n(R_d, R_g) = −grad P = ρ_a + Σ_i ρ_r,i (PET-ERG paper Sec. III-B.2).
+/// Navigation field ρ_n(R_d, R_g) = −grad P = ρ_a + Σ_i ρ_r,i [PET-ERG Sec. III-B.2].
 [[nodiscard]] inline Vec3 navigation_field(std::span<const ConeConstraint> cones, const Mat3& R_g,
                                            const Mat3& R_d) noexcept {
   Vec3 rho = attractive_field(R_g, R_d);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file pointing_threshold.hpp
-/// The pointing threshold Γ_g(R_g) of the PET-ERG paper (Sec. III-B.1, the set C_g of (2b)) and
+/// The pointing threshold Γ_g(R_g) of the PET-ERG paper (Sec. III-B.1, the set C_g of [PET-ERG eq. (2b)]) and
 /// the aggregate threshold Γ(R_g) = min{Γ_d, Γ_g(R_g), k_p(2 − ε_Γ)}.
 ///
 /// Geometry (docs/pet-erg.md, "Pointing threshold Γ_g"): on {V ≤ Γ} the rotation angle θ of
@@ -43,13 +43,13 @@ namespace attiguard::governor {
   return g;
 }
 
-/// Aggregate threshold Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (PET-ERG paper, Sec. III-B.1).
+/// Aggregate threshold Γ = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} [PET-ERG Sec. III-B.1].
 [[nodiscard]] inline double aggregate_threshold(double gamma_d, double gamma_g, double kp,
                                                 double epsilon_gamma) noexcept {
   return std::min({gamma_d, gamma_g, kp * (2.0 - epsilon_gamma)});
 }
 
-/// Dynamic safety margin Δ = κ max{Γ − V, 0} (PET-ERG paper, Sec. III-B.1).
+/// Dynamic safety margin Δ = κ max{Γ − V, 0} [PET-ERG Sec. III-B.1].
 [[nodiscard]] inline double dynamic_safety_margin(double kappa, double gamma, double V) noexcept {
   return kappa * std::max(gamma - V, 0.0);
 }

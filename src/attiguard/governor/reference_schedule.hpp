@@ -50,18 +50,18 @@ class ReferenceSchedule {
   ReferenceSchedule(std::span<const Waypoint> waypoints, Interpolation interpolation,
                     const Mat3& R_before);
 
-  /// R_d(t) (PET-ERG paper, Sec. II); allocation-free.
+  /// R_d(t) [PET-ERG Sec. II]; allocation-free.
   [[nodiscard]] Mat3 at(double t) const noexcept;
 
-  /// Number of waypoints of R_d(t) (PET-ERG paper, Sec. II).
+  /// Number of waypoints of R_d(t) [PET-ERG Sec. II].
   [[nodiscard]] int size() const noexcept { return count_; }
-  /// Waypoint i of R_d(t) (PET-ERG paper, Sec. II).
+  /// Waypoint i of R_d(t) [PET-ERG Sec. II].
   [[nodiscard]] const Waypoint& operator[](int i) const noexcept {
     return waypoints_[static_cast<std::size_t>(i)];
   }
-  /// How R_d(t) moves between waypoints (PET-ERG paper, Sec. II).
+  /// How R_d(t) moves between waypoints [PET-ERG Sec. II].
   [[nodiscard]] Interpolation interpolation() const noexcept { return interpolation_; }
-  /// The final (steady-state) desired attitude R_d of Theorem 2 (PET-ERG paper, Sec. IV-C).
+  /// The final (steady-state) desired attitude R_d of Theorem 2 [PET-ERG Sec. IV-C].
   [[nodiscard]] const Mat3& final_attitude() const noexcept {
     return waypoints_[static_cast<std::size_t>(count_ - 1)].R_d;
   }

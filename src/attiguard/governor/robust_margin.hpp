@@ -20,8 +20,8 @@ namespace attiguard::governor {
 
 /// The bounds the robust margin is computed from (docs/pet-erg.md, section 13, "Assumptions").
 struct RobustMarginInputs {
-  double kp{1.0};                 ///< k_p of (3) [N·m]
-  double kd{1.0};                 ///< k_d of (3) [N·m·s]
+  double kp{1.0};                 ///< k_p of [PET-ERG eq. (3)] [N·m]
+  double kd{1.0};                 ///< k_d of [PET-ERG eq. (3)] [N·m·s]
   lie::Mat3 J{lie::Mat3::Identity()};  ///< inertia [kg·m²]
   double control_period{0.1};     ///< h [s], > 0
   int delay_periods{0};           ///< d ∈ {0, 1}: the torque computed at t_k is applied from t_{k+d}

@@ -1,8 +1,8 @@
 #pragma once
 /// @file torque_threshold.hpp
-/// The input-saturation threshold Γ_d of the PET-ERG paper (Sec. III-B.1, the set C_d of (2a)):
+/// The input-saturation threshold Γ_d of the PET-ERG paper (Sec. III-B.1, the set C_d of [PET-ERG eq. (2a)]):
 /// the largest level of V(R, ω, R_g) = ½ ωᵀJω + k_p φ(RᵀR_g) whose sublevel set keeps the PD
-/// torque (3) within ‖τ‖ ≤ τ_max.
+/// torque [PET-ERG eq. (3)] within ‖τ‖ ≤ τ_max.
 ///
 /// Γ_d = min { V : ‖k_p sk(R_e)^∨ − k_d ω‖ ≥ τ_max } over SO(3) × R³ reduces exactly to
 ///   Γ_d = min_{θ ∈ [0, π/2]} f(θ),
@@ -12,12 +12,12 @@
 
 namespace attiguard::governor {
 
-/// Parameters Γ_d depends on (PET-ERG paper, eqs. (2a), (3) and V of Sec. III-A).
+/// Parameters Γ_d depends on ([PET-ERG eqs. (2a), (3)] and V of Sec. III-A).
 struct TorqueThresholdInputs {
-  double kp{1.0};          ///< k_p of (3) [N·m]
-  double kd{1.0};          ///< k_d of (3) [N·m·s]
+  double kp{1.0};          ///< k_p of [PET-ERG eq. (3)] [N·m]
+  double kd{1.0};          ///< k_d of [PET-ERG eq. (3)] [N·m·s]
   double lambda_min{1.0};  ///< smallest principal moment of J [kg·m²]
-  double tau_max{1.0};     ///< τ_max of (2a) [N·m]
+  double tau_max{1.0};     ///< τ_max of [PET-ERG eq. (2a)] [N·m]
 };
 
 /// The reduced objective f(θ) above (PET-ERG paper, Γ_d of Sec. III-B.1; docs/pet-erg.md):

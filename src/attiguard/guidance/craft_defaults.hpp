@@ -1,9 +1,9 @@
 #pragma once
 /// @file craft_defaults.hpp
 /// The guidance settings derived from the spacecraft (profile "craft", the default of kind
-/// `waypoint`; docs/waypoint.md, "Tuning"): what the waypoint paper leaves open (Algorithm 1's
-/// tolerances, the braking margin of (16), the hand-over to the RCT of (28)-(30), the PID gains
-/// of (27)) follows from the mass, the main thrust, the RCT authority, the inertia, the wheel
+/// `waypoint`; docs/waypoint.md, "Tuning"): what the Waypoint paper leaves open (Algorithm 1's
+/// tolerances, the braking margin of [Waypoint eq. (16)], the hand-over to the RCT of [Waypoint eqs. (28)-(30)], the PID gains
+/// of [Waypoint eq. (27)]) follows from the mass, the main thrust, the RCT authority, the inertia, the wheel
 /// limit and the control period. The paper's own settings are profile "paper". Each formula is
 /// defined here once; the scenario reader uses them for keys the file leaves out.
 
@@ -31,7 +31,7 @@ struct CraftLimits {
 /// misaligned firing, α T_max/m, is at most half of what one RCT can take back.
 [[nodiscard]] double craft_pointing_tolerance(const CraftLimits& c) noexcept;
 
-/// Braking margin γ of (16): one control period of firing delay at the cruise speed V_d costs
+/// Braking margin γ of [Waypoint eq. (16)]: one control period of firing delay at the cruise speed V_d costs
 /// V_d T_s of braking distance; γ = clamp(1/(1 + 4 a T_s/V_d), 0.5, 0.95) keeps that (with a
 /// factor 2) inside the margin of the braking curve.
 [[nodiscard]] double craft_braking_margin(const CraftLimits& c, double cruise_speed) noexcept;
@@ -40,7 +40,7 @@ struct CraftLimits {
 /// on/off engine; the paper's 0.02 m/s), at most half the cruise speed [m/s].
 [[nodiscard]] double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexcept;
 
-/// Speed below which the velocity projection (17)-(22) fades out: max(0.05, 2.5 a T_s) [m/s]
+/// Speed below which the velocity projection [Waypoint eqs. (17)-(22)] fades out: max(0.05, 2.5 a T_s) [m/s]
 /// (the paper example's 0.05 m/s; above it, one period of thrust turns v̂ by less than ≈ 0.4 rad,
 /// so x_d = −v̂ does not spin).
 [[nodiscard]] double craft_projection_blend_speed(const CraftLimits& c) noexcept;
@@ -57,7 +57,7 @@ struct CraftLimits {
                                            double position_accuracy, double arrival_radius,
                                            double slew_time) noexcept;
 
-/// RCT gains of (28): κ_d = a_rct/δ_v (at the bang-bang threshold f_max/2 an RCT fires once
+/// RCT gains of [Waypoint eq. (28)]: κ_d = a_rct/δ_v (at the bang-bang threshold f_max/2 an RCT fires once
 /// ‖v‖ ≥ δ_v/2), κ_p from craft_kappa_p(), then κ_d raised to κ_p/λ if needed so that the
 /// switching line is never steeper than λ = craft_rct_slope().
 [[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
@@ -73,13 +73,13 @@ struct CraftLimits {
 [[nodiscard]] double craft_kappa_p(const CraftLimits& c, double kappa_d,
                                    double position_accuracy) noexcept;
 
-/// Dead band of the bang-bang RCT law (28)-(30) at rest: no thruster fires while
+/// Dead band of the bang-bang RCT law [Waypoint eqs. (28)-(30)] at rest: no thruster fires while
 /// κ_p ‖e‖ < threshold · a_rct, i.e. within threshold · a_rct/κ_p of the waypoint [m]
 /// (+∞ for κ_p = 0).
 [[nodiscard]] double rct_position_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
                                             double threshold) noexcept;
 
-/// Speed dead band of (28)-(30) on the waypoint: threshold · a_rct/κ_d [m/s].
+/// Speed dead band of [Waypoint eqs. (28)-(30)] on the waypoint: threshold · a_rct/κ_d [m/s].
 [[nodiscard]] double rct_speed_dead_band(const CraftLimits& c, const control::RctPositionGains& g,
                                          double threshold) noexcept;
 
@@ -99,7 +99,7 @@ struct CraftLimits {
 /// S = J/J_max, with the ω × J ω feed-forward) so that every principal axis, however unequal the
 /// moments, has the same natural frequency ω_n = min(0.3, 0.1/T_s) rad/s (the sampled derivative
 /// term k_d S_ii T_s/(2 J_i) = 2 ω_n T_s ≤ 0.2 on every axis) and, with a wheel limit τ_w, at most
-/// √(τ_w/(2 J_max)); k_p = 2 ω_n² J_max, k_d = 4 ω_n J_max (ε ≈ θ/2 in (27)); k_i = 0.
+/// √(τ_w/(2 J_max)); k_p = 2 ω_n² J_max, k_d = 4 ω_n J_max (ε ≈ θ/2 in [Waypoint eq. (27)]); k_i = 0.
 [[nodiscard]] control::QuaternionPidGains craft_attitude_gains(const CraftLimits& c) noexcept;
 
 /// Estimated duration of a half-turn slew with the gains `gains` (10/ω_n of the PD (27)) or, with

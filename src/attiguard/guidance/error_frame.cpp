@@ -26,7 +26,7 @@ ErrorFrame error_frame(const Quat& q_ir, const Vec3& e_i, const Vec3& e_dot_i,
   const Vec3 e_hat_dot = (e_dot_i - e_hat * e_hat.dot(e_dot_i)) / std::max(e_norm, e_floor);
   const Vec3 u_dot = R_ri * e_hat_dot;
   const Vec3 x = Vec3::UnitX();
-  // n ∝ [cos(ϑ/2), k sin(ϑ/2)] (eq. (8) with the erratum fixed): [1 + cos ϑ, k sin ϑ].
+  // n ∝ [cos(ϑ/2), k sin(ϑ/2)] ([Waypoint eq. (8)] with the erratum fixed): [1 + cos ϑ, k sin ϑ].
   Quat n;
   n(0) = 1.0 + x.dot(u);
   n.tail<3>() = x.cross(u);

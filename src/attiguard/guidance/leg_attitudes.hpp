@@ -3,7 +3,7 @@
 /// The nominal desired attitudes of a waypoint mission, predicted before flying (docs/mission.md,
 /// "Checks before flying"): per leg, the attitude that points x_b at the waypoint (the chart of
 /// guidance::WaypointSequencer's leg start: the previous attitude turned by the shortest arc,
-/// waypoint paper (6)-(12) with ϑ = 0) and the reversed one of the braking phase (turned by π about its
+/// [Waypoint eqs. (6)-(12)] with ϑ = 0) and the reversed one of the braking phase (turned by π about its
 /// z axis, Fig. 1(b)). The mission kind checks them against the pointing cones.
 
 #include <span>

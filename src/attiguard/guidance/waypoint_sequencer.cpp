@@ -64,7 +64,7 @@ GuidanceFrameSpec WaypointSequencer::frame_spec() const noexcept {
 }
 
 Quat WaypointSequencer::continuous_q_ib(const lie::Mat3& R_ib) const noexcept {
-  // The quaternion of (4) evolves continuously; rotation_to_quat picks η ≥ 0, so restore the
+  // The quaternion of [Waypoint eq. (4)] evolves continuously; rotation_to_quat picks η ≥ 0, so restore the
   // sign nearest the previous sample. (27) is not invariant under q → −q: a sign jump would
   // reverse the proportional term.
   const Quat q = lie::rotation_to_quat(R_ib);
@@ -75,10 +75,10 @@ void WaypointSequencer::start_leg(const MissionInputs& in) noexcept {
   const Vec3 e_i = waypoints_[static_cast<std::size_t>(index_)] - in.p_i;
   leg_distance_ = e_i.norm();
   // Chart: the current attitude turned by the shortest arc from x_b to ê, so that aligning
-  // needs no roll and ϑ starts at 0 (the parallel case of (11), handled smoothly).
+  // needs no roll and ϑ starts at 0 (the parallel case of [Waypoint eq. (11)], handled smoothly).
   const Vec3 x_i = in.R_ib.col(0);
   chart_accel_ = lie::quat_multiply(lie::shortest_arc_quat(x_i, e_i), q_ib_);
-  // Sign of the chart such that η_{d,b} ≥ 0: the PID (27) then takes the short way round.
+  // Sign of the chart such that η_{d,b} ≥ 0: the PID [Waypoint eq. (27)] then takes the short way round.
   if (control::attitude_error(chart_accel_, q_ib_)(0) < 0.0) {
     chart_accel_ = -chart_accel_;
   }
@@ -277,7 +277,7 @@ DesiredAttitude WaypointSequencer::evaluate(const MissionInputs& in, const Vec3&
 
 namespace {
 
-/// The pointing error the thrust waits for: ‖ε_{d,b}‖ of the attitude error (27), or, with
+/// The pointing error the thrust waits for: ‖ε_{d,b}‖ of the attitude error [Waypoint eq. (27)], or, with
 /// pointing_thrust_axis, sin(α/2) of the angle α between x_b and x_d, which equals ‖ε_{d,b}‖
 /// when the error has no roll about x (only the thrust axis matters for firing).
 double pointing_error_of(const MissionParams& p, const lie::Mat3& R_ib, const Quat& q_ib,
@@ -292,7 +292,7 @@ double pointing_error_of(const MissionParams& p, const lie::Mat3& R_ib, const Qu
 }
 
 /// The main engine's thrust in `mode` once pointed [Waypoint eq. (13)] [Waypoint eq. (16)]:
-/// (13) when accelerating, (15)-(16) when decelerating, full thrust when braking, else 0 [N].
+/// (13) when accelerating, [Waypoint eqs. (15)-(16)] when decelerating, full thrust when braking, else 0 [N].
 double main_engine_thrust(const MissionParams& p, Mode mode, const Vec3& e_i, const Vec3& v_i) noexcept {
   if (mode == Mode::accelerate) {
     // (13) on the closing speed: a craft receding (or drifting sideways) faster than V_d still
@@ -305,7 +305,7 @@ double main_engine_thrust(const MissionParams& p, Mode mode, const Vec3& e_i, co
     const double speed = v_i.norm();
     const double d_brake = p.brake_along_velocity && speed > 0.0 ? std::max(e_i.dot(v_i) / speed, 0.0)
                                                                  : e_i.norm();
-    return deceleration_thrust(p.mass, speed, d_brake, p.T_max, p.braking_margin);  // (15)-(16)
+    return deceleration_thrust(p.mass, speed, d_brake, p.T_max, p.braking_margin);  // [Waypoint eqs. (15)-(16)]
   }
   if (mode == Mode::brake) return p.T_max;
   return 0.0;
@@ -316,7 +316,7 @@ double main_engine_thrust(const MissionParams& p, Mode mode, const Vec3& e_i, co
 void set_fine_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
                   MissionCommand& cmd) noexcept {
   const Vec3 f_b = control::rct_position_force(p.mass, in.R_ib, e_i, in.v_i, p.rct);
-  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);  // (28)-(30)
+  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);  // [Waypoint eqs. (28)-(30)]
   cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
 }
 
@@ -393,7 +393,7 @@ MissionCommand WaypointSequencer::step(const MissionInputs& in) noexcept {
   if (mode_ == Mode::fine) {
     set_fine_rct(params_, in, e_i, cmd);
   }
-  // (e) feed-forward with the acceleration the commands will produce, then the PID (27) with
+  // (e) feed-forward with the acceleration the commands will produce, then the PID [Waypoint eq. (27)] with
   // the feed-forward capped (cmd.omega_d_d stays exact).
   const Vec3 a_i = in.R_ib * (Vec3(thrust, 0.0, 0.0) + cmd.inputs.f_rct_b) / params_.mass;
   d = evaluate(in, a_i);

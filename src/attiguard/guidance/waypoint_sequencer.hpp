@@ -1,6 +1,6 @@
 #pragma once
 /// @file waypoint_sequencer.hpp
-/// The waypoint sequencer: the waypoint mission as an explicit state machine — the "future work" of the waypoint paper
+/// The waypoint sequencer: the waypoint mission as an explicit state machine — the "future work" of the Waypoint paper
 /// (Conclusion) built from its Algorithm 1:
 ///
 ///   align → accelerate → coast → flip → decelerate → fine → (next waypoint: align | done)
@@ -23,11 +23,11 @@ namespace attiguard::guidance {
 /// Waypoint sequencer modes (their integer values are the `mode` column of trajectory.csv).
 enum class Mode : int {
   align = 0,       ///< point x_b at the waypoint, T = 0, until ‖ε_{d,b}‖ < pointing tolerance
-  accelerate = 1,  ///< T from (13) while pointing within tolerance
+  accelerate = 1,  ///< T from [Waypoint eq. (13)] while pointing within tolerance
   coast = 2,       ///< T = 0 after the acceleration distance (or V_d reached), attitude held on e
   flip = 3,        ///< rotate 180° onto the reversed error frame (Fig. 1(b)), T = 0
-  decelerate = 4,  ///< T from (15)-(16) with the velocity projection (17)-(24)
-  fine = 5,        ///< RCT law (28)-(30), attitude held, until δ_p / δ_v are met
+  decelerate = 4,  ///< T from [Waypoint eqs. (15)-(16)] with the velocity projection [Waypoint eqs. (17)-(24)]
+  fine = 5,        ///< RCT law [Waypoint eqs. (28)-(30)], attitude held, until δ_p / δ_v are met
   done = 6,        ///< every waypoint visited; attitude held, no thrust
   /// Beyond the paper: main engine against the velocity (x_d = −v̂ held) until ‖v‖ ≤ the cut-off
   /// speed, entered when the speed left is more than the RCT can stop within half the re-plan
@@ -38,7 +38,7 @@ enum class Mode : int {
 /// Number of modes (codes 0 … kModeCount − 1).
 inline constexpr int kModeCount = 8;
 
-/// Lower-case name of a mode ("align", …) of the waypoint paper's Algorithm 1 as a state machine.
+/// Lower-case name of a mode ("align", …) of the Waypoint paper's Algorithm 1 as a state machine.
 [[nodiscard]] const char* mode_name(Mode mode) noexcept;
 
 /// When the coast ends and the flip starts. Both also flip when the braking point is due (the
@@ -71,7 +71,7 @@ enum class TransitionReason : int {
   lateral_speed,
 };
 
-/// Lower-case name of a transition reason ("pointing_reached", …), waypoint paper Algorithm 1.
+/// Lower-case name of a transition reason ("pointing_reached", …), Waypoint paper Algorithm 1.
 [[nodiscard]] const char* reason_name(TransitionReason reason) noexcept;
 
 /// Every parameter of the mission logic (Algorithm 1 and the choices the paper leaves open).
@@ -79,7 +79,7 @@ struct MissionParams {
   double mass{100.0};        ///< m [kg]
   double T_max{20.0};        ///< main thrust [N]
   double f_max{0.5};         ///< RCT thrust [N]
-  double cruise_speed{100.0};         ///< V_d of (13) [m/s]
+  double cruise_speed{100.0};         ///< V_d of [Waypoint eq. (13)] [m/s]
   double acceleration_fraction{0.2};  ///< accelerate over this fraction of the leg (Sec. VI)
   double pointing_tolerance{1e-6};    ///< fire only when the pointing error < this (Algorithm 1)
   bool pointing_thrust_axis{false};   ///< error = sin(∠(x_b, x_d)/2) (roll ignored) instead of ‖ε_{d,b}‖
@@ -94,17 +94,17 @@ struct MissionParams {
   /// approach or at a re-plan [m/s]; ≤ 0: never (Algorithm 1 as printed). Scenario default:
   /// √(replan_distance · f_max/m), the speed the RCT stop within half the re-plan distance.
   double brake_speed{0.0};
-  bool velocity_projection{true};     ///< (17)-(22) while flipping/decelerating
+  bool velocity_projection{true};     ///< [Waypoint eqs. (17)-(22)] while flipping/decelerating
   VelocityProjectionParams projection{};
   FlipTiming flip_timing{FlipTiming::immediate};
   double flip_lead_time{60.0};        ///< [s], FlipTiming::braking_point only
-  control::RctPositionGains rct{};    ///< κ_p, κ_d of (28)
+  control::RctPositionGains rct{};    ///< κ_p, κ_d of [Waypoint eq. (28)]
   double rct_threshold{0.5};          ///< bang-bang: on when T_j ≥ threshold · f_max
   double reanchor_cos{0.0};           ///< re-anchor the error-frame chart when cos ϑ < this
   double e_floor{1e-6};               ///< [m], error_frame()
 };
 
-/// The default brake speed (beyond the waypoint paper): √(replan_distance · f_max / m), the speed
+/// The default brake speed (beyond the Waypoint paper): √(replan_distance · f_max / m), the speed
 /// the RCT alone stop within half the re-plan distance.
 [[nodiscard]] inline double default_brake_speed(const MissionParams& p) noexcept {
   return std::sqrt(p.replan_distance * p.f_max / p.mass);
@@ -117,8 +117,8 @@ struct MissionParams {
   return d > 0.0 ? e_i.dot(v_i) / d : 0.0;
 }
 
-/// Predicted stopping distance at the closing speed v_c with the braking margin γ of (16):
-/// v_c²/(2 γ T_max/m) for v_c > 0, else 0 [m] (waypoint paper (14) with final speed 0).
+/// Predicted stopping distance at the closing speed v_c with the braking margin γ of [Waypoint eq. (16)]:
+/// v_c²/(2 γ T_max/m) for v_c > 0, else 0 [m] ([Waypoint eq. (14)] with final speed 0).
 [[nodiscard]] inline double stopping_distance(double closing, const MissionParams& p) noexcept {
   return closing > 0.0 ? closing * closing / (2.0 * p.braking_margin * p.T_max / p.mass) : 0.0;
 }
@@ -141,7 +141,7 @@ struct MissionCommand {
   bool transition{false};
   Mode from{Mode::align};
   TransitionReason reason{TransitionReason::none};
-  Quat q_id{Quat(1.0, 0.0, 0.0, 0.0)};  ///< desired attitude (23)
+  Quat q_id{Quat(1.0, 0.0, 0.0, 0.0)};  ///< desired attitude [Waypoint eq. (23)]
   Vec3 omega_d_d{Vec3::Zero()};         ///< feed-forward (24)
   double pointing_error{0.0};           ///< ‖ε_{d,b}‖, or sin(∠(x_b, x_d)/2) (thrust axis)
   double projection_weight{0.0};        ///< λ of velocity_frame()
@@ -149,24 +149,24 @@ struct MissionCommand {
   GuidanceFrameSpec spec{};  ///< frame of this sample (chart, sign, projection) for checks
 };
 
-/// The waypoint state machine (waypoint paper, Algorithm 1; docs/waypoint.md, "State machine")
+/// The waypoint state machine (Waypoint paper, Algorithm 1; docs/waypoint.md, "State machine")
 /// with its attitude PID; formerly guidance::Mission (not the kind `mission`, sim/mission_run).
 /// Not copyable across waypoint storage: the waypoint span must outlive the sequencer.
 class WaypointSequencer {
  public:
-  /// Sequencer over `waypoints_i` (the array P_wp of the waypoint paper, Sec. VI) with the PID
-  /// gains of (27); the first leg starts at the first step().
+  /// Sequencer over `waypoints_i` (the array P_wp of the Waypoint paper, Sec. VI) with the PID
+  /// gains of [Waypoint eq. (27)]; the first leg starts at the first step().
   WaypointSequencer(const MissionParams& params, const control::QuaternionPidGains& gains,
                     std::span<const Vec3> waypoints_i) noexcept;
 
-  /// One control sample (Algorithm 1 body): transitions, desired attitude (23)-(24), thrust
-  /// (13)/(16), RCT (28)-(30), PID (27). Noexcept, allocation-free.
+  /// One control sample (Algorithm 1 body): transitions, desired attitude [Waypoint eqs. (23)-(24)], thrust
+  /// (13)/(16), RCT [Waypoint eqs. (28)-(30)], PID [Waypoint eq. (27)]. Noexcept, allocation-free.
   [[nodiscard]] MissionCommand step(const MissionInputs& in) noexcept;
 
   [[nodiscard]] Mode mode() const noexcept { return mode_; }
   [[nodiscard]] int waypoint() const noexcept { return index_; }
   [[nodiscard]] bool done() const noexcept { return mode_ == Mode::done; }
-  /// The guidance frame of the current mode (chart, sign of e in (6), projection (17)), for tests.
+  /// The guidance frame of the current mode (chart, sign of e in [Waypoint eq. (6)], projection (17)), for tests.
   [[nodiscard]] GuidanceFrameSpec frame_spec() const noexcept;
   [[nodiscard]] const MissionParams& params() const noexcept { return params_; }
 

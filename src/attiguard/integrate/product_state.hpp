@@ -4,7 +4,7 @@
 /// Runge–Kutta–Munthe-Kaas integrators work in.
 ///
 /// Tangent vectors are stacked [ξ_1; …; ξ_K; ẋ] with ξ_j the *body* velocity of factor j
-/// (Ṙ_j = R_j ξ̂_j, as in PET-ERG paper eq. (1)). The retraction is the group exponential
+/// (Ṙ_j = R_j ξ̂_j, as in [PET-ERG eq. (1)]). The retraction is the group exponential
 /// acting on the right: y ⊕ δ = (R_j exp(δ̂_j), x + δ_x); local(y1, y2) = (log(R1ᵀR2), x2 − x1).
 
 #include <Eigen/Core>

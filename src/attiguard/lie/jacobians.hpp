@@ -7,7 +7,7 @@
 /// J_l(w) = I + ((1 − cos θ)/θ²) ŵ + ((θ − sin θ)/θ³) ŵ², and
 /// J_l⁻¹(w) = I − ½ ŵ + (1/θ² − (1 + cos θ)/(2θ sin θ)) ŵ², valid for ‖w‖ < 2π.
 /// The Runge–Kutta–Munthe-Kaas integrators (integrate/) use J_r⁻¹ for Ṙ = R ω̂ with
-/// R = R₀ exp(Ω̂): Ω̇ = J_r⁻¹(Ω) ω. ConReach's exp-atlas dynamics (26) use the same maps.
+/// R = R₀ exp(Ω̂): Ω̇ = J_r⁻¹(Ω) ω. ConReach's exp-atlas dynamics [ConReach eq. (26)] use the same maps.
 
 #include "attiguard/lie/so3.hpp"
 

@@ -12,7 +12,7 @@ namespace attiguard::lie {
 [[nodiscard]] Vec3 any_orthogonal(const Vec3& a) noexcept;
 
 /// Quaternion of the shortest-arc rotation R with R â = b̂ (â, b̂ the normalised inputs).
-/// Waypoint paper (8), (10), (11) with the sine/cosine erratum fixed (docs/errata.md, Waypoint 1):
+/// [Waypoint eqs. (8), (10), (11)] with the sine/cosine erratum fixed (docs/errata.md, Waypoint 1):
 /// q = [cos(ϑ/2), k sin(ϑ/2)], k = â × b̂ / ‖â × b̂‖, computed as [η, â × b̂ / (2η)] for ϑ ≤ π/2
 /// (smooth through ϑ = 0) and from atan2 beyond (accurate near π). When â = −b̂ it is by π about
 /// any_orthogonal(â). Zero input vectors give the identity.

@@ -3,7 +3,7 @@
 /// The rotation group SO(3): hat/vee, exponential and logarithm, distances, projection.
 ///
 /// Conventions (docs/conventions.md): R maps body to inertial coordinates, the kinematics are
-/// Ṙ = R ω̂ (PET-ERG paper, eq. (1)). All functions are allocation-free and noexcept, so they may be
+/// Ṙ = R ω̂ [PET-ERG eq. (1)]. All functions are allocation-free and noexcept, so they may be
 /// called from flight-loop code.
 
 #include <Eigen/Core>
@@ -14,7 +14,7 @@ namespace attiguard::lie {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-/// Hat map R³ → so(3) with hat(x) y = x × y (PET-ERG paper, Notation; waypoint paper S(·)).
+/// Hat map R³ → so(3) with hat(x) y = x × y (PET-ERG paper, Notation; Waypoint paper S(·)).
 [[nodiscard]] Mat3 hat(const Vec3& x) noexcept;
 
 /// Vee map so(3) → R³, inverse of hat. Reads the three independent entries of a skew matrix
@@ -25,7 +25,7 @@ using Mat3 = Eigen::Matrix3d;
 [[nodiscard]] Mat3 sk(const Mat3& A) noexcept;
 
 /// Exponential map so(3) → SO(3), Rodrigues' formula exp(ŵ) = I + (sin θ/θ) ŵ + ((1−cos θ)/θ²) ŵ²
-/// with θ = ‖w‖, and Taylor series of both coefficients for θ < 1e-4 (ConReach paper, Sec. 2).
+/// with θ = ‖w‖, and Taylor series of both coefficients for θ < 1e-4 [ConReach Sec. 2].
 [[nodiscard]] Mat3 exp(const Vec3& w) noexcept;
 
 /// Principal logarithm SO(3) → R³ (rotation vector, ‖w‖ ∈ [0, π]): exp(log(R)) = R.
@@ -37,7 +37,7 @@ using Mat3 = Eigen::Matrix3d;
 /// Bi-invariant (geodesic) distance d(R1, R2) = ‖log(R1ᵀ R2)‖ ∈ [0, π] (docs/conventions.md).
 [[nodiscard]] double distance(const Mat3& R1, const Mat3& R2) noexcept;
 
-/// Attitude error function φ(R) = ½ tr(I − R) = 1 − cos θ ∈ [0, 2] (PET-ERG paper, Sec. III-A).
+/// Attitude error function φ(R) = ½ tr(I − R) = 1 − cos θ ∈ [0, 2] [PET-ERG Sec. III-A].
 [[nodiscard]] double phi(const Mat3& R) noexcept;
 
 /// Closest rotation to a near-rotation M in the Frobenius norm (polar factor via SVD, with the

@@ -1,7 +1,7 @@
 #pragma once
 /// @file boundary.hpp
-/// Representation of metric balls (contraction-reachability paper, Sec. 5): the boundary of
-/// B_Q(R_c, r) in an exp chart, obtained by integrating the chart geodesic dynamics (26) to
+/// Representation of metric balls [ConReach Sec. 5]: the boundary of
+/// B_Q(R_c, r) in an exp chart, obtained by integrating the chart geodesic dynamics [ConReach eq. (26)] to
 /// t = 1 from r(0) = Ψ_i(R_c) and w(0) on the ellipsoid wᵀQw = r² (Thm. 10). The directions of
 /// w(0) are a Fibonacci lattice on the sphere.
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file closed_loop.hpp
-/// Closed-loop attitude dynamics X(R, ω) = (R ω̂, X_ω(R, ω)) on SO(3) × R³ (contraction-
-/// reachability paper, eq. (6)) with the matrices of Theorem 4:
+/// Closed-loop attitude dynamics X(R, ω) = (R ω̂, X_ω(R, ω)) on SO(3) × R³
+/// [ConReach eq. (6)] with the matrices of Theorem 4:
 ///   A(R, ω) α = d/dt X_ω(R exp(t α̂), ω)|₀,   B(R, ω) = ∂X_ω/∂ω,
 /// and sound enclosures of A, B and X_ω over a set {R : d(R, R_c) ≤ ρ} × box(ω).
 ///
@@ -10,8 +10,8 @@
 ///    A = 0, B = M. M is a linear ω-dynamics matrix, not an inertia.
 ///  - RigidBodyLoop:   J ω̇ = −ω × Jω + τ with τ constant (0: torque-free; the plant of
 ///    dynamics::RigidBody); A = 0, B = J⁻¹((Jω)^ − ω̂ J), affine in ω.
-///  - PdLoop:          that plant under control::pd_torque, τ = k_p sk(Rᵀ R_g)^∨ − k_d ω (PET-ERG
-///    paper, eq. (3)) to a fixed R_g; A = −(k_p/2) J⁻¹ (tr(E) I − E), E = Rᵀ R_g;
+///  - PdLoop:          that plant under control::pd_torque, τ = k_p sk(Rᵀ R_g)^∨ − k_d ω
+///    [PET-ERG eq. (3)] to a fixed R_g; A = −(k_p/2) J⁻¹ (tr(E) I − E), E = Rᵀ R_g;
 ///    B = J⁻¹((Jω)^ − ω̂ J − k_d I).
 /// docs/reach.md derives A and B; tests/reach/test_reach_closed_loop.cpp checks them against finite
 /// differences.
@@ -35,7 +35,7 @@ struct LmiVertex {
   Mat3 B{Mat3::Zero()};
 };
 
-/// What the contraction LMI (10) must hold for, over a set U: for every (R, ω) ∈ U there are
+/// What the contraction LMI [ConReach eq. (10)] must hold for, over a set U: for every (R, ω) ∈ U there are
 /// convex weights θ_v and Δ = [ΔA ΔB] (3×6) with ‖Δ‖₂ ≤ rho such that
 ///   (A(R, ω), B(R, ω), ω) = Σ_v θ_v (A_v, B_v, ω_v) + (ΔA, ΔB, 0).
 /// Since (10) is affine in (A, B, ω̂) for fixed (Q, P, c), imposing it at every vertex robustly
@@ -121,7 +121,7 @@ class RigidBodyLoop final : public ClosedLoop {
   std::array<Mat3, 3> G_;  ///< B(ω) = Σ_k ω_k G_k
 };
 
-/// PD law (PET-ERG eq. (3)) towards a fixed R_g.
+/// PD law [PET-ERG eq. (3)] towards a fixed R_g.
 class PdLoop final : public ClosedLoop {
  public:
   PdLoop(const Mat3& J, double kp, double kd, const Mat3& R_g);

@@ -1,8 +1,8 @@
 #pragma once
 /// @file conreach.hpp
-/// The ConReach loop (contraction-reachability paper, Algorithm 1): metric balls
+/// The ConReach loop [ConReach Alg. 1]: metric balls
 /// B_{Q_i×P_i}((R_i, ω_i), r_i) along a nominal simulation, r_{i+1} = r_i e^{c_{i+1}(t_{i+1}−t_i)}
-/// + the bound of the nominal's integration error over the step (tube.hpp), with (c, Q, P) per step from the SDP (20)
+/// + the bound of the nominal's integration error over the step (tube.hpp), with (c, Q, P) per step from the SDP [ConReach eq. (20)]
 /// over the enclosure U_i of tube.hpp, chosen either by the paper's line search or by
 /// minimising the bi-invariant enclosure of the resulting ball.
 

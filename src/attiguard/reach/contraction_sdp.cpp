@@ -276,7 +276,7 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const Mat3& Q_prev, const M
 
 namespace {
 
-/// The variables of the SDP (20): the metric's entries (metric_basis), then one multiplier μ_v
+/// The variables of the SDP [ConReach eq. (20)]: the metric's entries (metric_basis), then one multiplier μ_v
 /// per vertex when the enclosure is robust (ρ > 0), then t for the max_min_eigenvalue objective.
 struct SdpLayout {
   std::vector<Mat6> basis;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file contraction_sdp.hpp
-/// The contraction LMI (10) of Theorem 4, its coupled-metric generalisation, and the per-step
-/// SDP (20) of ConReach. For the metric M = [[Q, S], [Sᵀ, P]] (metrics.hpp) and the linearised
+/// The contraction LMI [ConReach eq. (10)] of Theorem 4, its coupled-metric generalisation, and the per-step
+/// SDP [ConReach eq. (20)]. For the metric M = [[Q, S], [Sᵀ, P]] (metrics.hpp) and the linearised
 /// closed loop F = [[−ω̂, I], [A, B]] of z = (δθ_b, δω) (docs/reach.md, "Coupled metrics"):
 ///
 ///   L(M; A, B, ω, c) = MF + FᵀM − 2cM ⪯ 0   on U_i;
@@ -14,7 +14,7 @@
 ///   [ Uᵀ             −μ_v I₃ ] ⪯ 0,   U = M[0; I] = [S; P],
 ///
 /// which follows from Sym(UΔ) ⪯ μ⁻¹UUᵀ + μΔᵀΔ and a Schur complement (docs/reach.md).
-/// Constraints of (20): Q_floor I ⪯ Q ⪯ Q_i, ε I ⪯ P ⪯ P_i (product), or
+/// Constraints of [ConReach eq. (20)]: Q_floor I ⪯ Q ⪯ Q_i, ε I ⪯ P ⪯ P_i (product), or
 /// diag(Q_floor I, ε I) ⪯ M ⪯ M_i (coupled). Every returned (Q, P, c) is
 /// certified a posteriori in double precision: Q ⪯ Q_i and P ⪯ P_i are enforced by scaling
 /// (Q, P) down (the LMI is homogeneous in (Q, P, μ)), and any residual positive eigenvalue e of
@@ -34,7 +34,7 @@ namespace attiguard::reach {
 /// L(M; A, B, ω, c) = MF + FᵀM − 2cM, F = [[−ω̂, I], [A, B]] (docs/reach.md, "Coupled metrics").
 [[nodiscard]] Mat6 contraction_lmi(const Mat6& M, const Mat3& A, const Mat3& B, const Vec3& omega,
                                    double c);
-/// M(Q, P; A, B, ω, c) of (10) (the product metric, S = 0).
+/// M(Q, P; A, B, ω, c) of [ConReach eq. (10)] (the product metric, S = 0).
 [[nodiscard]] Mat6 contraction_lmi(const Mat3& Q, const Mat3& P, const Mat3& A, const Mat3& B,
                                    const Vec3& omega, double c);
 

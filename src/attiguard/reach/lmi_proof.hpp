@@ -1,7 +1,7 @@
 #pragma once
 /// @file lmi_proof.hpp
 /// A proof, valid for the floating-point numbers computed with, that a certified solution of
-/// the contraction SDP satisfies the LMI (10) (contraction-reachability paper, Thm. 4) at every
+/// the contraction SDP satisfies the LMI [ConReach eq. (10)] [ConReach Thm. 4] at every
 /// vertex of an LmiEnclosure, and that the metric stays positive definite and monotone
 /// (Q ≻ 0, P ≻ 0, Q ⪯ Q_prev, P ⪯ P_prev; paper Lemma 5). docs/reach.md, "Rigorous LMI check":
 ///  1. every matrix is evaluated in outward-rounded interval arithmetic (scalar_interval.hpp);
@@ -31,7 +31,7 @@ struct NegativeDefiniteProof {
 [[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc,
                                                           const StateMetric& metric, double c,
                                                           const std::vector<double>& mu);
-/// The product-metric case S = 0 (LMI (10)).
+/// The product-metric case S = 0 (LMI [ConReach eq. (10)]).
 [[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const Mat3& Q,
                                                           const Mat3& P, double c,
                                                           const std::vector<double>& mu);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file metrics.hpp
-/// The metrics of ConReach (contraction-reachability paper, Sec. 3.1): the P-metric on R³, the
+/// The metrics of ConReach [ConReach Sec. 3.1]: the P-metric on R³, the
 /// left-invariant metric G_Q on SO(3) (Def. 1), the product metric G_Q × G_P (Def. 2), and
 /// computable bounds on the left-invariant distance d_Q, which has no closed form:
 ///
@@ -56,7 +56,7 @@ using lie::lambda_min;
 /// Throws InputError "`what`: … (must be symmetric positive definite)" unless is_spd(M).
 void require_spd(const Mat3& M, const std::string& what);
 
-/// ⟨u, v⟩ of G_Q at any R for body vectors u = (RᵀK1)^∨, v = (RᵀK2)^∨ (eq. (8)).
+/// ⟨u, v⟩ of G_Q at any R for body vectors u = (RᵀK1)^∨, v = (RᵀK2)^∨ ([ConReach eq. (8)]).
 [[nodiscard]] inline double q_inner(const Mat3& Q, const Vec3& u, const Vec3& v) { return u.dot(Q * v); }
 /// d_P(x1, x2) = ‖x1 − x2‖_P (Sec. 3.1.1).
 [[nodiscard]] double p_distance(const Mat3& P, const Vec3& x1, const Vec3& x2);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file partition.hpp
-/// Partitioning of a larger initial set (contraction-reachability paper, Sec. 4.1): a
+/// Partitioning of a larger initial set [ConReach Sec. 4.1]: a
 /// deterministic cover of the attitude ball B(R0, a) by bi-invariant balls times a cover of the
 /// ω ball B(ω0, b) by Euclidean balls; every cell is analysed independently, cells in parallel.
 ///
@@ -21,7 +21,7 @@ namespace attiguard::reach {
 [[nodiscard]] std::vector<InitialSet> partition_initial_set(const InitialSet& whole, int n_att,
                                                             int n_omega);
 
-/// ConReach on every cell (contraction-reachability paper, Sec. 4.1: cells are independent).
+/// ConReach on every cell (ConReach paper, Sec. 4.1: cells are independent).
 /// The cells are dealt round robin over the MPI ranks of `world` (parallel/mpi_world.hpp) and,
 /// inside a rank, run `threads` at a time (0: hardware concurrency; SDP calls are serialised in
 /// the solver wrapper); every rank returns all cells, bit for bit what one process computes.

@@ -1,8 +1,8 @@
 #pragma once
 /// @file polynomial_field.hpp
 /// The ω-dynamics of a ConReach closed loop written as the polynomial it is (docs/reach.md,
-/// "Nominal error bound"): every built-in loop (contraction-reachability paper, eq. (6) with the
-/// loops of Sec. 6 and PET-ERG eq. (3)) has
+/// "Nominal error bound"): every built-in loop ([ConReach eq. (6)] with the
+/// loops of Sec. 6 and [PET-ERG eq. (3)]) has
 ///   X_ω(R, ω) = c + B ω + (ωᵀ Q_a ω)_{a=1..3} + L vec(R),
 /// with vec(R) the 9 entries of R row by row (vec(R)_{3r+s} = R_rs). This exact form is what the
 /// Taylor-model bound of the nominal's integration error (nominal_error.hpp) differentiates.

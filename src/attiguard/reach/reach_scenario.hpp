@@ -1,6 +1,6 @@
 #pragma once
 /// @file reach_scenario.hpp
-/// The validated configuration of a `reach` analysis (ConReach, reach paper, Algorithm 1): the
+/// The validated configuration of a `reach` analysis (ConReach, ConReach paper, Algorithm 1): the
 /// closed loop, the initial set, the settings, the partition, soundness sampling and the safety
 /// specification. Read by scenario::parse_reach (keys: docs/scenario-format.md, section "reach");
 /// consumed by the reach driver app/reach_run.

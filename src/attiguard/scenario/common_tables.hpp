@@ -58,7 +58,7 @@ template <class Enum, std::size_t N>
 
 /// The shared keys of a cone table: `type` ("keep_in", default, or "keep_out"), `axis_b`,
 /// `direction_i` (normalised), `half_angle` (rad) or `half_angle_deg`: θ_c ∈ (0, π] of a keep-in
-/// cone, α ∈ [0, π) of a keep-out cone (PET-ERG paper, constraint (2b)).
+/// cone, α ∈ [0, π) of a keep-out cone (constraint [PET-ERG eq. (2b)]).
 struct ConeGeometry {
   bool keep_out{false};
   Eigen::Vector3d axis_b{Eigen::Vector3d::UnitZ()};
@@ -71,7 +71,7 @@ struct ConeGeometry {
 /// Reads the shared cone keys of `t` (declares them; the caller declares its own extras).
 [[nodiscard]] ConeGeometry read_cone_geometry(const TableReader& t);
 
-/// One [[cones]] table of kinds pet_erg and mission: constraint (2b) of the PET-ERG paper,
+/// One [[cones]] table of kinds pet_erg and mission: constraint [PET-ERG eq. (2b)],
 /// keep-in (θ_c) or keep-out (α, stored as the keep-in cone of π − α), with the field's
 /// delta_offset, zeta_offset and repulsive_gain. Throws InputError.
 [[nodiscard]] governor::ConeConstraint parse_cone(const TableReader& t);
@@ -82,7 +82,7 @@ struct ConeGeometry {
 
 /// Why the initial reference (or, when `reference_given` is false, the initial attitude it
 /// defaults to) is outside the navigation field's domain c > δ of cone `index` of `root`'s
-/// [[cones]] (c = a_c^T R a_b, PET-ERG paper (2b)), in the cone's own terms: the angle of the body
+/// [[cones]] (c = a_c^T R a_b, [PET-ERG eq. (2b)]), in the cone's own terms: the angle of the body
 /// axis from direction_i against the half angle as given (keep-out or keep-in, in its unit), and
 /// whether it is inside the forbidden region or only within the field's margin (delta_offset).
 [[nodiscard]] std::string cone_domain_message(const TableReader& root, std::size_t index,
@@ -90,15 +90,15 @@ struct ConeGeometry {
                                               bool reference_given);
 
 /// The governor block shared by kinds pet_erg and mission: `governor` (name table
-/// governor::kGovernorModeNames, default "pet"), [control] kp, kd, tau_max (PD law (3) and the
-/// torque limit (2a)), and the optional [erg] table (parse_erg_table). `control_extra` names
+/// governor::kGovernorModeNames, default "pet"), [control] kp, kd, tau_max (PD law [PET-ERG eq. (3)] and the
+/// torque limit [PET-ERG eq. (2a)]), and the optional [erg] table (parse_erg_table). `control_extra` names
 /// the kind's own extra [control] keys (declared, read by the caller from the returned table).
 /// The inertia J is left to the caller.
 TableReader parse_governor_block(const TableReader& root, governor::GovernorParams& params,
                                  std::initializer_list<std::string_view> control_extra = {});
 
-/// Reads the optional `[erg]` table of `root` into `params` (PET-ERG paper: κ of (4)/(6), c_Γ and
-/// T_s of (5)-(6), ε of the navigation field, ε_Γ of the cap k_p(2 − ε_Γ)); keys left out keep
+/// Reads the optional `[erg]` table of `root` into `params` (κ of [PET-ERG eqs. (4), (6)], c_Γ and
+/// T_s of [PET-ERG eqs. (5)-(6)], ε of the navigation field, ε_Γ of the cap k_p(2 − ε_Γ)); keys left out keep
 /// the values in `params`; unknown keys are errors.
 void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
 

@@ -9,7 +9,7 @@
 
 namespace attiguard::scenario {
 
-/// Parses and validates a `mission` document (PET-ERG paper (2)-(6) on the waypoint paper's
+/// Parses and validates a `mission` document ([PET-ERG eqs. (2)-(6)] on the Waypoint paper's
 /// Algorithm 1); rejects unknown keys. Throws InputError.
 [[nodiscard]] sim::MissionScenario parse_mission(const Document& doc);
 

@@ -334,7 +334,7 @@ struct AdmissibilityTables {
   const TableReader& desired;
 };
 
-/// Admissibility (PET-ERG paper, Theorem 1): R_g(0) inside every cone's field domain and
+/// Admissibility [PET-ERG Thm. 1]: R_g(0) inside every cone's field domain and
 /// V(R_0, ω_0, R_g(0)) ≤ Γ(R_g(0)); with robust margins the targets and the start of
 /// docs/pet-erg.md, section 13. The same checks for every mode: `governor = "none"` runs the very
 /// scenario the governor would run, to show what the governor prevents.

@@ -34,7 +34,7 @@ std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, st
   return std::make_shared<reach::PdLoop>(J, kp, kd, sys.rotation("reference"));
 }
 
-/// [initial]: the initial set B_I(R0, a) × B_I(ω0, b) and P_0 (reach paper, Algorithm 1).
+/// [initial]: the initial set B_I(R0, a) × B_I(ω0, b) and P_0 [ConReach Alg. 1].
 void parse_initial(const TableReader& root, reach::InitialSet& initial) {
   const TableReader init = root.table("initial");
   declare(init, {"attitude", "attitude_radius", "omega_b", "omega_radius", "metric_P"});

@@ -8,7 +8,7 @@
 
 namespace attiguard::scenario {
 
-/// Parses and validates a `reach` document (reach paper, Algorithm 1 inputs); rejects unknown
+/// Parses and validates a `reach` document (ConReach paper, Algorithm 1 inputs); rejects unknown
 /// keys. Throws InputError.
 [[nodiscard]] reach::ReachScenario parse_reach(const Document& doc);
 

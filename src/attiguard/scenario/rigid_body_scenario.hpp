@@ -8,7 +8,7 @@
 
 namespace attiguard::scenario {
 
-/// Parses and validates a `rigid_body` document (PET-ERG paper, eq. (1) and PD law (3));
+/// Parses and validates a `rigid_body` document ([PET-ERG eq. (1)] and PD law [PET-ERG eq. (3)]);
 /// rejects unknown keys. Throws InputError.
 [[nodiscard]] sim::RigidBodyScenario parse_rigid_body(const Document& doc);
 

@@ -279,7 +279,7 @@ void check_waypoint_rct_authority(const TableReader& craft, const TableReader& g
                   " m of the waypoint with kappa_p = " + four_digits(mp.rct.kappa_p));
   }
   const double band_v = guidance::rct_speed_dead_band(limits, mp.rct, mp.rct_threshold);
-  // At the band itself the position term of (28) still fires (waypoint_fine.toml flies at
+  // At the band itself the position term of [Waypoint eq. (28)] still fires (waypoint_fine.toml flies at
   // band = δ_v); twice the accuracy is out of reach.
   if (band_v > 2.0 * mp.speed_accuracy) {
     fail_fine("kappa_d", "speed_accuracy",

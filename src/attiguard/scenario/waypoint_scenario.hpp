@@ -11,7 +11,7 @@
 
 namespace attiguard::scenario {
 
-/// Parses and validates a `waypoint` document (waypoint paper, Secs. III-VI); rejects unknown
+/// Parses and validates a `waypoint` document (Waypoint paper, Secs. III-VI); rejects unknown
 /// keys, bad parameters and waypoints that cannot be reached within the duration (even
 /// bang-bang at T_max/m). Throws InputError.
 [[nodiscard]] sim::WaypointScenario parse_waypoint(const Document& doc);

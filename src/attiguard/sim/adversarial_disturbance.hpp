@@ -51,7 +51,7 @@ inline constexpr double kAdversaryTiny = 1e-12;
 struct AdversaryModel {
   lie::Mat3 J_inv{lie::Mat3::Identity()};           ///< J⁻¹ [1/(kg·m²)]
   lie::Vec3 minor_axis_b{lie::Vec3::UnitX()};       ///< unit eigenvector of J's smallest moment
-  std::span<const governor::ConeConstraint> cones;  ///< the pointing constraints (2b)
+  std::span<const governor::ConeConstraint> cones;  ///< the pointing constraints [PET-ERG eq. (2b)]
   double bound{0.0};                                ///< d̄ [N·m]
   double weight{0.5};                               ///< w of the combination
 };
@@ -89,7 +89,7 @@ struct AdversaryModel {
   return d.isZero() ? model.minor_axis_b : d;
 }
 
-/// The cone of smallest margin a_cᵀ R a_b − cos θ_c (PET-ERG paper, (2b)), or −1 without cones.
+/// The cone of smallest margin a_cᵀ R a_b − cos θ_c [PET-ERG eq. (2b)], or −1 without cones.
 [[nodiscard]] inline int nearest_cone(std::span<const governor::ConeConstraint> cones,
                                       const lie::Mat3& R_ib) noexcept {
   int best = -1;

@@ -25,7 +25,7 @@ MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode
   governor::GovernorParams params = sc.params;
   params.mode = mode;
   governor::AttitudeGovernor gov(params, sc.cones);
-  gov.reset(0.0, sc.waypoint.R0_ib);  // R_g(0) = R(0) (PET-ERG paper, Sec. IV-A)
+  gov.reset(0.0, sc.waypoint.R0_ib);  // R_g(0) = R(0) [PET-ERG Sec. IV-A]
   const dynamics::SpacecraftPlant plant(sc.waypoint.mission.mass, sc.waypoint.J,
                                         sc.waypoint.max_wheel_torque, sc.waypoint.main_thrust_axis_b);
 
@@ -36,7 +36,7 @@ MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode
     const lie::Mat3 R_d = lie::quat_to_rotation(cmd.q_id);
     const governor::GovernorOutput& out = gov.step(t, y.R[0], dynamics::omega_b_of(y), R_d);
     last = &out;
-    cmd.inputs.tau_b = out.tau_b;  // PD law (3) towards the governed R_g
+    cmd.inputs.tau_b = out.tau_b;  // PD law [Waypoint eq. (3)] towards the governed R_g
     if (cmd.inputs.thrust > 0.0 && lie::distance(out.R_g, R_d) > sc.align_tolerance) {
       cmd.inputs.thrust = 0.0;  // fire only when the governed attitude is aligned
       ++res.thrust_gated;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file mission_run.hpp
-/// Runs a `mission` scenario: the waypoint guidance (waypoint paper, Algorithm 1) with its desired
-/// attitude R_d(t) passed through the PET-ERG (PET-ERG paper, PD law (3) and (5)-(6)); thrust only
+/// Runs a `mission` scenario: the waypoint guidance [Waypoint Alg. 1] with its desired
+/// attitude R_d(t) passed through the PET-ERG (PD law [PET-ERG eq. (3)] and [PET-ERG eqs. (5)-(6)]); thrust only
 /// when the governed reference R_g is aligned with R_d. The same mission is also flown with the
 /// other setting of the governor (the unconstrained twin, `governor = "none"`, or the PET-ERG when
 /// the scenario itself is unconstrained) so the summary gives the cost of the constraints.
@@ -28,7 +28,7 @@ struct MissionResult {
   /// The numerical failure that ended this flight (NumericalError's message), empty if none:
   /// the other flight's results are still reported (docs/mission.md, "Outcome").
   std::string failure;
-  /// Δv of the flight: Σ over waypoints of ∫T/m + ∫Σf_j/m (waypoint paper, (5)) [m/s].
+  /// Δv of the flight: Σ over waypoints of ∫T/m + ∫Σf_j/m [Waypoint eq. (5)] [m/s].
   [[nodiscard]] double delta_v() const noexcept;
 };
 
@@ -37,7 +37,7 @@ using MissionObserver = std::function<void(double t, const dynamics::SpacecraftS
                                            const guidance::MissionCommand& cmd,
                                            const governor::GovernorOutput& gov)>;
 
-/// Flies the mission with the governor in `mode` (PET-ERG paper (3)-(6) on the waypoint paper's
+/// Flies the mission with the governor in `mode` ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
 /// Algorithm 1); `observer` sees each sample with the governor's output.
 [[nodiscard]] MissionResult simulate_mission(const MissionScenario& sc,
                                              governor::GovernorMode mode,
@@ -53,7 +53,7 @@ struct MissionFlights {
 
 /// Flies the scenario (its trajectory rows emitted into `rows`: t, p_x..p_z, v_x..v_z,
 /// q_w..q_z, omega_x..omega_z, tau_x..tau_z, tau_norm, thrust, mode, waypoint, qg_w..qg_z,
-/// qd_w..qd_z, trigger, min_margin) and its twin (PET-ERG paper (3)-(6) on the waypoint paper's
+/// qd_w..qd_z, trigger, min_margin) and its twin ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
 /// Algorithm 1). Throws NumericalError when a state or command is not finite.
 [[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows);
 

@@ -1,8 +1,8 @@
 #pragma once
 /// @file mission_scenario.hpp
-/// The validated configuration of a `mission` run: the waypoint guidance of the waypoint paper
+/// The validated configuration of a `mission` run: the waypoint guidance of the Waypoint paper
 /// (Algorithm 1) whose desired attitude R_d(t) goes through the PET-ERG of the PET-ERG paper (PD
-/// law (3), reference update (5)-(6)) so that pointing cones (2b) and the torque limit (2a) hold
+/// law [PET-ERG eq. (3)], reference update [PET-ERG eqs. (5)-(6)]) so that pointing cones [PET-ERG eq. (2b)] and the torque limit [PET-ERG eq. (2a)] hold
 /// during the slews. Read by scenario::parse_mission (docs/mission.md,
 /// docs/scenario-format.md); consumed by sim/mission_run.
 

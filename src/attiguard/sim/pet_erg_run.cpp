@@ -30,7 +30,7 @@ using lie::Vec3;
 /// A stop of the integrator and what happens there.
 struct Stop {
   double t{0.0};
-  bool sample{false};   ///< a sampling instant t_k of (5) (continuous-time loop)
+  bool sample{false};   ///< a sampling instant t_k of [PET-ERG eq. (5)] (continuous-time loop)
   bool output{false};   ///< an output row
   bool control{false};  ///< a control instant k·control_period (flight loop)
 };
@@ -218,7 +218,7 @@ PetErgState pet_erg_initial_state(const PetErgScenario& sc) {
   return y;
 }
 
-/// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by (4) or (6) (PET-ERG paper).
+/// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by [PET-ERG eq. (4)] or (6) (PET-ERG paper).
 PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
   governor::GovernorDesign design = design_governor(sc);
   const governor::AttitudeGovernor gov(design.params, sc.cones);
@@ -232,7 +232,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3) = out.xi_g;
-    d.segment<3>(6) = body.angular_acceleration(s.x, out.tau_b);  // eq. (1)
+    d.segment<3>(6) = body.angular_acceleration(s.x, out.tau_b);  // [PET-ERG eq. (1)]
     return d;
   };
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
@@ -303,7 +303,7 @@ void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, Pet
 
 /// control_period > 0: the flight loop. AttitudeGovernor::step runs at t_k = k·h with the state
 /// of that instant and its torque is held until t_{k+1} (zero-order hold, HeldActuation); between
-/// the instants only (R, ω) evolve under (1), R_g is the governor's (docs/pet-erg.md, "Flight
+/// the instants only (R, ω) evolve under [PET-ERG eq. (1)], R_g is the governor's (docs/pet-erg.md, "Flight
 /// loop", sections 11-13).
 class PetErgFlightLoop {
  public:
@@ -348,7 +348,7 @@ class PetErgFlightLoop {
   }
 
  private:
-  /// Between control instants: (R, ω) under eq. (1) with the held torque, the disturbance d
+  /// Between control instants: (R, ω) under [PET-ERG eq. (1)] with the held torque, the disturbance d
   /// (docs/pet-erg.md, section 11) and the wheels' gyroscopic torque (A h) × ω (section 12).
   PetErgState::Tangent field(double t, const PetErgState& s) const {
     PetErgState::Tangent d;
@@ -528,7 +528,7 @@ void add_wheels(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult&
   j["final_wheel_momentum"] = r.final_wheel_momentum;
 }
 
-/// The gains and the governor's parameters [PET-ERG eq. (3)-(6)] and the thresholds of the run
+/// The gains and the governor's parameters [PET-ERG eqs. (3)-(6)] and the thresholds of the run
 /// (docs/pet-erg.md, sections 2-3).
 void add_governor_figures(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   j["kp"] = sc.params.gains.kp;
@@ -548,7 +548,7 @@ void add_governor_figures(nlohmann::json& j, const PetErgScenario& sc, const Pet
   j["V_initial"] = r.V_initial;
 }
 
-/// The constraints (2a), (2b) of the PET-ERG paper, the wheels' limits and the level V − Γ.
+/// The constraints [PET-ERG eqs. (2a), (2b)], the wheels' limits and the level V − Γ.
 void add_constraints(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult& r) {
   j["max_torque_norm"] = r.max_torque_norm;
   const bool torque_ok = r.max_torque_norm <= sc.params.tau_max;
@@ -596,7 +596,7 @@ void add_outcome(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult
           : nlohmann::json(nullptr);
 }
 
-/// The sampling of (5) of the PET-ERG paper and the integrator's counters.
+/// The sampling of [PET-ERG eq. (5)] and the integrator's counters.
 void add_counters(nlohmann::json& j, const PetErgResult& r) {
   j["samples"] = r.samples;
   j["samples_updating"] = r.samples_updating;
@@ -605,7 +605,7 @@ void add_counters(nlohmann::json& j, const PetErgResult& r) {
   j["evaluations"] = r.evaluations;
 }
 
-/// The cones (2b) of the PET-ERG paper (the true constraints), with δ, ζ of their bands.
+/// The cones [PET-ERG eq. (2b)] (the true constraints), with δ, ζ of their bands.
 nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {
   nlohmann::json j = nlohmann::json::array();
   for (const governor::ConeConstraint& c : sc.cones) {

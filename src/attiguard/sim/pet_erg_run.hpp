@@ -1,9 +1,9 @@
 #pragma once
 /// @file pet_erg_run.hpp
-/// Simulation of the `pet_erg` scenario kind: the rigid body (1) under the PD law (3) with the
-/// PET-ERG (5)-(6), the continuous ERG (4), or no governor (PET-ERG paper). The state
+/// Simulation of the `pet_erg` scenario kind: the rigid body (1) under the PD law [PET-ERG eq. (3)] with the
+/// [PET-ERG eqs. (5)-(6)], the continuous ERG [PET-ERG eq. (4)], or no governor (PET-ERG paper). The state
 /// (R, R_g, ω) ∈ SO(3)² × R³ is integrated with the RKMK integrators, which stop exactly at every
-/// sampling instant t_k = k·T_s where the trigger (5) is evaluated and then held.
+/// sampling instant t_k = k·T_s where the trigger [PET-ERG eq. (5)] is evaluated and then held.
 
 #include <functional>
 #include <vector>
@@ -69,7 +69,7 @@ struct PetErgResult {
   long output_rows{0};  ///< rows emitted into a sink (record_pet_erg)
 };
 
-/// Simulates (1) under (3) with the update (4), (5)-(6) or none (PET-ERG paper) without any
+/// Simulates (1) under [PET-ERG eq. (3)] with the update [PET-ERG eq. (4)], [PET-ERG eqs. (5)-(6)] or none (PET-ERG paper) without any
 /// file output; `on_output` (optional) receives t = 0 and every
 /// output instant. Throws NumericalError on divergence.
 [[nodiscard]] PetErgResult simulate_pet_erg(const PetErgScenario& sc,

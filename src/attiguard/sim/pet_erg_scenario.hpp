@@ -1,7 +1,7 @@
 #pragma once
 /// @file pet_erg_scenario.hpp
 /// The validated configuration of a `pet_erg` run: constrained attitude control with the PD law
-/// (3) and the periodic event-triggered (5)-(6), continuous (4), or no reference governor of the
+/// (3) and the periodic event-triggered [PET-ERG eqs. (5)-(6)], continuous (4), or no reference governor of the
 /// PET-ERG paper. Read from a scenario file by scenario::parse_pet_erg (keys:
 /// docs/scenario-format.md, section "pet_erg"); consumed by sim/pet_erg_run.
 

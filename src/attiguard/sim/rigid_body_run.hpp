@@ -1,6 +1,6 @@
 #pragma once
 /// @file rigid_body_run.hpp
-/// Simulation of the `rigid_body` scenario kind: free body, constant torque, or the PD law (3)
+/// Simulation of the `rigid_body` scenario kind: free body, constant torque, or the PD law [PET-ERG eq. (3)]
 /// of the PET-ERG paper towards a fixed reference, on SO(3) × R³ with the RKMK integrators.
 
 #include <nlohmann/json.hpp>
@@ -27,7 +27,7 @@ struct RigidBodyResult {
   long output_rows{0};                     ///< rows emitted into the sink
 };
 
-/// Simulates the scenario (PET-ERG paper, eq. (1) under the scenario's torque law) and emits one
+/// Simulates the scenario ([PET-ERG eq. (1)] under the scenario's torque law) and emits one
 /// row per output instant into `rows` (columns t, q_w..q_z, omega_x..z, tau_x..z,
 /// attitude_error_rad, phi, energy, V, h_x..h_z). Throws NumericalError on divergence.
 [[nodiscard]] RigidBodyResult simulate_rigid_body(const RigidBodyScenario& sc, io::RowSink& rows);

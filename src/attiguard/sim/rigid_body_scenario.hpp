@@ -1,7 +1,7 @@
 #pragma once
 /// @file rigid_body_scenario.hpp
-/// The validated configuration of a `rigid_body` run: a rigid body (PET-ERG paper, eq. (1)) that
-/// is torque-free, under a constant body torque, or under the PD law (3) of the PET-ERG paper
+/// The validated configuration of a `rigid_body` run: a rigid body [PET-ERG eq. (1)] that
+/// is torque-free, under a constant body torque, or under the PD law [PET-ERG eq. (3)]
 /// towards a fixed reference. Read from a scenario file by scenario::parse_rigid_body (keys:
 /// docs/scenario-format.md, section "rigid_body"); consumed by sim/rigid_body_run.
 

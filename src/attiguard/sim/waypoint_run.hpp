@@ -1,6 +1,6 @@
 #pragma once
 /// @file waypoint_run.hpp
-/// Simulation of the `waypoint` scenario kind (waypoint paper, Sec. VI): the plant (2)-(5) on
+/// Simulation of the `waypoint` scenario kind [Waypoint Sec. VI]: the plant [Waypoint eqs. (2)-(5)] on
 /// SO(3) × R⁹ with the RKMK integrators, the mission state machine and its controllers sampled
 /// every control period with zero-order hold of every command (main thruster, RCT, torque).
 
@@ -67,7 +67,7 @@ struct WaypointOutcome {
   [[nodiscard]] const char* value() const noexcept { return completed ? "completed" : "incomplete"; }
 };
 
-/// The outcome of a waypoint flight (waypoint paper, Algorithm 1's termination, judged).
+/// The outcome of a waypoint flight (Waypoint paper, Algorithm 1's termination, judged).
 [[nodiscard]] WaypointOutcome waypoint_outcome(const WaypointScenario& sc, const WaypointSimResult& res);
 
 /// Called at every control sample with the state and the command computed there.
@@ -81,7 +81,7 @@ using SampleObserver =
 using CommandFilter =
     std::function<void(double t, const dynamics::SpacecraftState& y, guidance::MissionCommand& cmd)>;
 
-/// Simulates Algorithm 1 of the waypoint paper on the plant (3)-(5); `filter`, when set, may
+/// Simulates Algorithm 1 of the Waypoint paper on the plant [Waypoint eqs. (3)-(5)]; `filter`, when set, may
 /// change each sample's command (torque, thrust) before the observer sees it and it is applied.
 [[nodiscard]] WaypointSimResult simulate_waypoint(const WaypointScenario& sc,
                                                   const SampleObserver& observer = {},
@@ -94,7 +94,7 @@ using CommandFilter =
 /// (after emitting the rows).
 [[nodiscard]] WaypointSimResult record_waypoint(const WaypointScenario& sc, io::RowSink& rows);
 
-/// The summary.json object of a waypoint run (waypoint paper, Sec. VI figures; keys:
+/// The summary.json object of a waypoint run (Waypoint paper, Sec. VI figures; keys:
 /// docs/scenario-format.md, section "waypoint"), without wall_time_s.
 [[nodiscard]] nlohmann::json waypoint_summary(const WaypointScenario& sc,
                                               const WaypointSimResult& res);

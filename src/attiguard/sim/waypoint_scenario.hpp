@@ -1,7 +1,7 @@
 #pragma once
 /// @file waypoint_scenario.hpp
 /// The validated configuration of a `waypoint` run: waypoint tracking with one main thruster,
-/// reaction wheels and six reaction-control thrusters (waypoint paper, Secs. III-VI). Read by
+/// reaction wheels and six reaction-control thrusters (Waypoint paper, Secs. III-VI). Read by
 /// scenario::parse_waypoint (keys: docs/scenario-format.md, section "waypoint"); consumed by
 /// sim/waypoint_run.
 
@@ -31,7 +31,7 @@ inline constexpr NameTable<bool, 2> kBrakingDistanceNames{
 /// (docs/waypoint.md, "Tuning").
 enum class GuidanceProfile {
   craft,  ///< derived from the spacecraft (guidance/craft_defaults.hpp); the default
-  paper,  ///< the waypoint paper's settings (Algorithm 1 as printed, Tables I-II)
+  paper,  ///< the Waypoint paper's settings (Algorithm 1 as printed, Tables I-II)
 };
 inline constexpr NameTable<GuidanceProfile, 2> kGuidanceProfileNames{
     {{{GuidanceProfile::craft, "craft"}, {GuidanceProfile::paper, "paper"}}}};

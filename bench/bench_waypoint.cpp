@@ -6,7 +6,7 @@
 
 #include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 
 namespace {

@@ -23,7 +23,7 @@
 #include "attiguard/governor/governor_design.hpp"
 #include "attiguard/scenario/argument_checks.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
 #include "bindings.hpp"
 

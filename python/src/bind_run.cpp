@@ -23,7 +23,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;

@@ -25,7 +25,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 
 namespace attiguard::test::any_spacecraft {

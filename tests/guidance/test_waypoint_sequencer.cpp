@@ -8,7 +8,7 @@
 
 #include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 #include "test_support.hpp"
 

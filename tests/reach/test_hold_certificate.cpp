@@ -14,8 +14,8 @@
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "cli_runner.hpp"
 

@@ -9,8 +9,8 @@
 
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 #include "scenario/scenario_test_support.hpp"
 
 namespace attiguard::scenario {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "attiguard/scenario/dispersion.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/scenario/resolved_scenario.hpp"
 #include "scenario_test_support.hpp"
 

@@ -16,7 +16,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 
 namespace attiguard::scenario {
 namespace {

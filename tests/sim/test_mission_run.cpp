@@ -15,7 +15,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/scenario/read_mission.hpp"
 #include "attiguard/sim/mission_run.hpp"
 #include "cli_runner.hpp"
 

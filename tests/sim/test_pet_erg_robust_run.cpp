@@ -17,7 +17,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 
 namespace attiguard::sim {

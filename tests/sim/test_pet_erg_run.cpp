@@ -25,7 +25,7 @@
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "test_support.hpp"
 

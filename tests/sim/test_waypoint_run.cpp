@@ -11,7 +11,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 #include "cli_runner.hpp"
 

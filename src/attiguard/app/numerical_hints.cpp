@@ -12,8 +12,8 @@
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/lie/symmetric_eigen.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
-#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
+#include "attiguard/scenario/read_rigid_body.hpp"
 
 namespace attiguard::app {
 

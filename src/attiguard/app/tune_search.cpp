@@ -12,7 +12,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/one_line.hpp"
 #include "attiguard/scenario/document_edit.hpp"
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 
 namespace attiguard::app {
 

@@ -23,7 +23,7 @@
 #include "attiguard/io/output_records.hpp"
 #include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/document.hpp"
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 
 namespace attiguard::cli {
 namespace {

@@ -1,6 +1,6 @@
 // Scenario kind `reach` (docs/scenario-format.md, section "reach").
 
-#include "attiguard/scenario/reach_scenario.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 
 #include <array>
 #include <cmath>

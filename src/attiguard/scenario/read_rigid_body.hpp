@@ -1,5 +1,5 @@
 #pragma once
-/// @file rigid_body_scenario.hpp
+/// @file read_rigid_body.hpp
 /// Scenario kind `rigid_body` → sim::RigidBodyScenario (sim/rigid_body_scenario.hpp). Keys:
 /// docs/scenario-format.md, section "rigid_body".
 

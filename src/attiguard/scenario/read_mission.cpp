@@ -1,7 +1,7 @@
-/// @file mission_scenario.cpp
+/// @file read_mission.cpp
 /// Parsing of scenario kind `mission` (docs/mission.md).
 
-#include "attiguard/scenario/mission_scenario.hpp"
+#include "attiguard/scenario/read_mission.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/table_reader.hpp"
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 
 namespace attiguard::scenario {
 

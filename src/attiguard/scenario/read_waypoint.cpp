@@ -1,6 +1,6 @@
 // Scenario kind `waypoint` (docs/scenario-format.md, section "waypoint").
 
-#include "attiguard/scenario/waypoint_scenario.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/lie/symmetric_eigen.hpp"
 
 #include <numbers>

@@ -1,5 +1,5 @@
 #pragma once
-/// @file reach_scenario.hpp
+/// @file read_reach.hpp
 /// Scenario kind `reach` → reach::ReachScenario (reach/reach_scenario.hpp), analysed with
 /// `attiguard reach SCENARIO --out DIR`. Keys: docs/scenario-format.md, section "reach".
 

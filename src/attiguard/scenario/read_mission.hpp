@@ -1,5 +1,5 @@
 #pragma once
-/// @file mission_scenario.hpp
+/// @file read_mission.hpp
 /// Scenario kind `mission` → sim::MissionScenario (sim/mission_scenario.hpp). Keys: a
 /// `waypoint` scenario plus `governor`, [control], [erg] and [[cones]] of a `pet_erg` scenario
 /// (docs/mission.md, docs/scenario-format.md).

@@ -1,6 +1,6 @@
 // Scenario kind `rigid_body` (docs/scenario-format.md, section "Kind rigid_body").
 
-#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/read_rigid_body.hpp"
 
 #include <array>
 #include <initializer_list>

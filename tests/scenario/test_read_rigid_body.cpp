@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "attiguard/lie/so3.hpp"
-#include "attiguard/scenario/rigid_body_scenario.hpp"
+#include "attiguard/scenario/read_rigid_body.hpp"
 #include "scenario/scenario_test_support.hpp"
 
 namespace attiguard::scenario {

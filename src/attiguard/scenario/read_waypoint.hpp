@@ -1,5 +1,5 @@
 #pragma once
-/// @file waypoint_scenario.hpp
+/// @file read_waypoint.hpp
 /// Scenario kind `waypoint` → sim::WaypointScenario (sim/waypoint_scenario.hpp). Keys:
 /// docs/scenario-format.md, section "waypoint".
 

@@ -1,6 +1,6 @@
 // Scenario kind `pet_erg` (docs/scenario-format.md, section "pet_erg").
 
-#include "attiguard/scenario/pet_erg_scenario.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/lie/symmetric_eigen.hpp"
 
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-/// @file pet_erg_scenario.hpp
+/// @file read_pet_erg.hpp
 /// Scenario kind `pet_erg` → sim::PetErgScenario (sim/pet_erg_scenario.hpp). Keys:
 /// docs/scenario-format.md, section "pet_erg".
 

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/scenario/ephemeris_check.hpp"
 #include "attiguard/scenario/messages.hpp"
 
 namespace attiguard::scenario {
@@ -254,6 +255,17 @@ void require_at_most_duration(const TableReader& simulation, std::string_view ke
       key, "the default must be <= " + numbers + "; set " + std::string(key) + " explicitly");
 }
 
+
+SimulationTimes read_simulation_times(const TableReader& root, const TableReader& simulation,
+                                      double output_interval_default) {
+  SimulationTimes times;
+  times.duration = simulation.number("duration", NumberRule::positive());
+  check_ephemeris_end(root, times.duration);  // the AEM's last date (docs/interop.md)
+  times.output_interval =
+      simulation.number_or("output_interval", output_interval_default, NumberRule::positive());
+  times.integrator = parse_integrator_settings(simulation);
+  return times;
+}
 
 integrate::IntegratorSettings parse_integrator_settings(const TableReader& simulation) {
   integrate::IntegratorSettings settings;

@@ -112,6 +112,17 @@ void parse_erg_table(const TableReader& root, governor::GovernorParams& params);
 /// max_step); shared by every scenario kind (docs/scenario-format.md, "Integrator keys").
 [[nodiscard]] integrate::IntegratorSettings parse_integrator_settings(const TableReader& simulation);
 
+/// The times every simulated kind's `[simulation]` table has (docs/scenario-format.md, "Common
+/// rules"): `duration` (> 0, and not past the last date of an ephemeris table), `output_interval`
+/// (> 0; `output_interval_default` when left out) and the integrator keys, read in that order.
+struct SimulationTimes {
+  double duration{0.0};
+  double output_interval{0.0};
+  integrate::IntegratorSettings integrator;
+};
+[[nodiscard]] SimulationTimes read_simulation_times(const TableReader& root, const TableReader& simulation,
+                                                    double output_interval_default);
+
 /// Rejects an interval `key` of `t` (a step, a period, an output interval) that `duration`
 /// would need more than the limit in force of `limit` times (work_limits.hpp; `what`:
 /// "integrator steps", "output rows", …), with the predicted count and the flag that raises the

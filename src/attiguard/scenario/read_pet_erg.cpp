@@ -301,10 +301,10 @@ void parse_simulation(const TableReader& root, sim::PetErgScenario& sc) {
   const TableReader simulation = root.table("simulation");
   declare(simulation, {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol",
                        "max_step", "convergence_tolerance"});
-  sc.duration = simulation.number("duration", NumberRule::positive());
-  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
-  sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
-  sc.integrator = parse_integrator_settings(simulation);
+  const SimulationTimes times = read_simulation_times(root, simulation, 0.01);
+  sc.duration = times.duration;
+  sc.output_interval = times.output_interval;
+  sc.integrator = times.integrator;
   sc.convergence_tolerance =
       simulation.number_or("convergence_tolerance", 1e-4, NumberRule::positive());
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);

@@ -50,10 +50,10 @@ sim::RigidBodyScenario parse_rigid_body(const Document& doc) {
   const TableReader simulation = root.table("simulation");
   declare(simulation,
           {"duration", "output_interval", "integrator", "step", "abs_tol", "rel_tol", "max_step"});
-  sc.duration = simulation.number("duration", NumberRule::positive());
-  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
-  sc.output_interval = simulation.number_or("output_interval", 0.01, NumberRule::positive());
-  sc.integrator = parse_integrator_settings(simulation);
+  const SimulationTimes times = read_simulation_times(root, simulation, 0.01);
+  sc.duration = times.duration;
+  sc.output_interval = times.output_interval;
+  sc.integrator = times.integrator;
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);
   require_step_budget(simulation, sc.integrator, sc.duration);
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,

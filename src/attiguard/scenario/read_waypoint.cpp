@@ -242,10 +242,10 @@ void check_waypoint_guidance_order(const TableReader& g, const guidance::Mission
 void read_waypoint_simulation(const TableReader& root, const TableReader& sim, sim::WaypointScenario& sc) {
   declare(sim, {"duration", "control_period", "output_interval", "integrator", "step", "abs_tol",
                 "rel_tol", "max_step"});
-  sc.duration = sim.number("duration", NumberRule::positive());
-  check_ephemeris_end(root, sc.duration);  // the AEM's last date (docs/interop.md)
-  sc.output_interval = sim.number_or("output_interval", 1.0, NumberRule::positive());
-  sc.integrator = parse_integrator_settings(sim);
+  const SimulationTimes times = read_simulation_times(root, sim, 1.0);
+  sc.duration = times.duration;
+  sc.output_interval = times.output_interval;
+  sc.integrator = times.integrator;
   if (sc.control_period > sc.duration) {
     sim.fail("control_period", "must be <= duration (" + detail::format_number(sc.duration) + ")");
   }

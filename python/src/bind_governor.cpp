@@ -21,6 +21,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
 #include "attiguard/governor/governor_design.hpp"
+#include "attiguard/io/json_values.hpp"
 #include "attiguard/scenario/argument_checks.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
@@ -39,14 +40,6 @@ using governor::GovernorParams;
 using lie::Mat3;
 using lie::Vec3;
 
-/// The JSON of a 3×3 matrix (rows) and a 3-vector, for the argument checks.
-nlohmann::json rows_of(const Mat3& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) rows.push_back({M(r, 0), M(r, 1), M(r, 2)});
-  return rows;
-}
-nlohmann::json vector_of(const Vec3& v) { return {v(0), v(1), v(2)}; }
-
 /// A cone from keyword arguments, validated by the file reader's cone check
 /// (scenario/argument_checks.hpp): exactly one of half_angle_deg and half_angle_rad.
 ConeConstraint make_cone(bool keep_out, const Vec3& axis_b, const Vec3& direction_i,
@@ -59,8 +52,8 @@ ConeConstraint make_cone(bool keep_out, const Vec3& axis_b, const Vec3& directio
                              "(radians)" + (half_angle_deg ? ", not both" : ""));
   }
   nlohmann::json cone = {{"type", keep_out ? "keep_out" : "keep_in"},
-                         {"axis_b", vector_of(axis_b)},
-                         {"direction_i", vector_of(direction_i)},
+                         {"axis_b", io::json_array(axis_b)},
+                         {"direction_i", io::json_array(direction_i)},
                          {"delta_offset", delta_offset},
                          {"zeta_offset", zeta_offset},
                          {"repulsive_gain", repulsive_gain}};
@@ -267,7 +260,7 @@ class PyGovernor {
                                        double epsilon_gamma, const DesignArgs& design_args) {
     const nlohmann::json args = {
         {"governor", mode},
-        {"inertia", rows_of(J)},
+        {"inertia", io::json_rows(J)},
         {"control", {{"kp", kp}, {"kd", kd}, {"tau_max", tau_max}}},
         {"erg", {{"kappa", kappa}, {"c_gamma", c_gamma}, {"sampling_period", Ts},
                  {"epsilon", epsilon}, {"epsilon_gamma", epsilon_gamma}}}};

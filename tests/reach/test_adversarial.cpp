@@ -36,3 +36,15 @@ TEST(ReachAdversarial, FindsTheEscapeFromBallsShrunkBy20Percent) {
   EXPECT_GT(rep.worst_ratio, 1.1);
   EXPECT_GT(rep.worst_ratio_time, 0.0);
 }
+
+// A set stop flag (the program's SIGINT/SIGTERM flag) ends the search before its next start.
+TEST(ReachAdversarial, ASetStopFlagEndsTheSearchAndTheReportSaysSo) {
+  const Paper p;
+  ar::AdversarialSettings s;
+  s.threads = 1;
+  const std::atomic<bool> stop{true};
+  s.stop = &stop;
+  const ar::AdversarialReport rep = ar::adversarial_check(p.loop, {p.initial}, {p.result}, s);
+  EXPECT_TRUE(rep.stopped);
+  EXPECT_EQ(rep.evaluations, 0);
+}

@@ -47,3 +47,19 @@ TEST(ReachSoundness, CatchesAnOmegaBoxUiFaceMovedInwards) {
   EXPECT_LT(rep.tube_inside, rep.samples);
   EXPECT_NEAR(rep.tube_first_violation_time, st.t0, 1e-12);
 }
+
+// A stop flag that is set (the program's SIGINT/SIGTERM flag) ends the sampling at the next
+// sample: the report says so and counts only the samples it checked.
+TEST(ReachSoundness, ASetStopFlagEndsTheSamplingAndTheReportSaysSo) {
+  Fixture f;
+  const std::atomic<bool> stop{true};
+  f.settings.stop = &stop;
+  const ar::SoundnessReport rep = f.check();
+  EXPECT_TRUE(rep.stopped);
+  EXPECT_EQ(rep.samples, 0);
+  const std::atomic<bool> go{false};
+  f.settings.stop = &go;
+  const ar::SoundnessReport full = f.check();
+  EXPECT_FALSE(full.stopped);
+  EXPECT_EQ(full.samples, 400);
+}

@@ -251,12 +251,13 @@ nlohmann::json adversarial_json(const AdversarialReport& worst) {
           {"wall_time_s", worst.wall_time_s}};
 }
 
-/// The adversarial check's settings: the soundness sampling's step, seed and threads.
+/// The adversarial check's settings: the soundness sampling's step, seed, threads and stop flag.
 AdversarialSettings adversarial_settings(const SoundnessSettings& soundness) {
   AdversarialSettings adv;
   adv.step = soundness.step;
   adv.seed = soundness.seed;
   adv.threads = soundness.threads;
+  adv.stop = soundness.stop;
   return adv;
 }
 
@@ -291,11 +292,13 @@ void run_soundness_checks(nlohmann::json& j, const ReachScenario& sc,
                           const std::vector<ReachResult>& results, int chart,
                           const std::filesystem::path& out_dir) {
   const ClosedLoop& loop = *sc.loop;
-  const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, sc.soundness);
+  SoundnessSettings soundness = sc.soundness;
+  soundness.stop = &io::interruption_flag();  // a signal ends the sampling at the next sample
+  const SoundnessReport rep = check_soundness(loop, sc.initial, cells, results, soundness);
   io::throw_if_interrupted();
   j["soundness"] = soundness_json(rep);
   write_samples_csv(out_dir, rep, chart);
-  const AdversarialReport worst = adversarial_check(loop, cells, results, adversarial_settings(sc.soundness));
+  const AdversarialReport worst = adversarial_check(loop, cells, results, adversarial_settings(soundness));
   io::throw_if_interrupted();
   j["adversarial"] = adversarial_json(worst);
   io::write_json(out_dir / "reach.json", j);

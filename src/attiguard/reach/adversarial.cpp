@@ -80,7 +80,12 @@ AdversarialReport adversarial_check(const ClosedLoop& loop, const std::vector<In
   AdversarialReport rep;
   std::mutex mutex;
   const long jobs = static_cast<long>(cells.size()) * kObjectives * settings.starts;
+  std::atomic<bool> stopped{false};
   parallel::parallel_for(jobs, settings.threads, [&](long job) {
+    if (settings.stop != nullptr && settings.stop->load(std::memory_order_relaxed)) {
+      stopped = true;
+      return;
+    }
     const auto cell = static_cast<std::size_t>(job / (kObjectives * settings.starts));
     const int which = static_cast<int>((job / settings.starts) % kObjectives);
     const ReachResult& res = results[cell];
@@ -117,6 +122,7 @@ AdversarialReport adversarial_check(const ClosedLoop& loop, const std::vector<In
       rep.omega_spread = rep.omega_spread.cwiseMax(best_score.omega);
     }
   });
+  rep.stopped = stopped.load();
   rep.attitude_claimed = results.front().steps.back().attitude_radius;
   rep.omega_claimed = results.front().steps.back().omega_half_widths;
   rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

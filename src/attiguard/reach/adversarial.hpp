@@ -8,6 +8,7 @@
 /// figures. Multi-start adaptive random search on the boundary of the initial set
 /// (‖log(R0ᵀR)‖ = a, ‖ω − ω0‖ = b: the set's extreme states), trajectories by RKMK4.
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -21,9 +22,13 @@ struct AdversarialSettings {
   double step{0.01};      ///< RKMK4 step of the trajectories [s]
   std::uint64_t seed{1};
   int threads{0};         ///< 0: hardware concurrency
+  /// When set and true (the program's interruption flag), no further start is taken: the report
+  /// then covers the starts searched so far and says `stopped`.
+  const std::atomic<bool>* stop{nullptr};
 };
 
 struct AdversarialReport {
+  bool stopped{false};            ///< the settings' stop flag ended the search early
   long evaluations{0};            ///< trajectories integrated
   double worst_ratio{0.0};        ///< max over cells, t_i > 0 and the optimised states
   double worst_ratio_time{0.0};   ///< the t_i where it was found

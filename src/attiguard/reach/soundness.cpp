@@ -148,7 +148,9 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   SampleTotals totals;
   rep.kept.resize(static_cast<std::size_t>(std::min<long>(settings.keep, settings.samples)));
 
+  std::atomic<long> checked{0};
   parallel::parallel_for(settings.samples, settings.threads, [&](long s) {
+    if (settings.stop != nullptr && settings.stop->load(std::memory_order_relaxed)) return;
     std::mt19937_64 g(settings.seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(s));
     const bool boundary = (s % 2) == 0;
     const Mat3 R = whole.R0 * lie::exp(sample_ball(g, whole.attitude_radius, boundary));
@@ -157,7 +159,10 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
     const bool keep = s < static_cast<long>(rep.kept.size());
     SampleOutcome outcome = check_sample(loop, results[cell], R, w, times, m, settings.step, keep);
     merge_sample(totals, outcome, rep, s, keep);
+    ++checked;
   });
+  rep.samples = checked.load();
+  rep.stopped = rep.samples < settings.samples;
   rep.inside = totals.inside.load();
   rep.max_ratio = totals.max_ratio;
   rep.first_violation_time = totals.first_violation;

@@ -8,6 +8,7 @@
 /// Half of the samples lie on the boundary of the initial set (‖log(R0ᵀR)‖ = a, ‖ω − ω0‖ = b),
 /// the rest inside.
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct SoundnessSettings {
   double step{0.01};  ///< RKMK4 step of the sample simulations [s]
   int keep{20};       ///< trajectories kept (at every sub-step time) for plots
   int threads{0};     ///< 0: hardware concurrency
+  /// When set and true (e.g. the program's interruption flag, docs/errors.md), no further sample
+  /// is started: the report then covers the samples checked so far and says `stopped`.
+  const std::atomic<bool>* stop{nullptr};
 };
 
 /// One simulated trajectory at the nominal's sub-step times.
@@ -31,7 +35,8 @@ struct SampleTrajectory {
 };
 
 struct SoundnessReport {
-  long samples{0};
+  long samples{0};           ///< samples checked (all of the settings' unless stopped)
+  bool stopped{false};       ///< the settings' stop flag ended the check early
   long inside{0};            ///< samples inside their ball at every t_i
   double max_ratio{0.0};     ///< max over samples and t_i of (upper distance)/r_i
   double first_violation_time{-1.0};  ///< -1 when none

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include "sanitizer_build.hpp"
+
 namespace attiguard::test {
 
 struct CliResult {
@@ -55,6 +57,24 @@ inline long count_lines(const std::string& s) {
     n += c == '\n';
   }
   return n + (!s.empty() && s.back() != '\n');
+}
+
+/// A reach example (examples/NAME) as this build's tests run it: its path, relative to the source
+/// directory, in Release; in the sanitized build a copy in a fresh directory whose [soundness]
+/// `samples = N` is for_this_build(N, 100) (sanitizer_build.hpp).
+inline std::filesystem::path reach_example_for_this_build(const std::string& name) {
+  const std::filesystem::path source = std::filesystem::path("examples") / name;
+  std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / source);
+  const std::string key = "\nsamples = ";
+  const std::size_t at = text.find(key, text.find("[soundness]"));
+  if (at == std::string::npos) return source;  // no [soundness] samples: the file as it is
+  const std::size_t end = text.find_first_not_of("0123456789", at + key.size());
+  if (kSanitizedWorkDivisor == 1) return source;
+  const long n = std::stol(text.substr(at + key.size(), end - at - key.size()));
+  text.replace(at + key.size(), end - at - key.size(), std::to_string(for_this_build(n, 100)));
+  const std::filesystem::path copy = fresh_dir("example_" + name) / name;
+  std::ofstream(copy) << text;
+  return copy;
 }
 
 }  // namespace attiguard::test

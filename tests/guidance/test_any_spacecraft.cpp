@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "any_spacecraft.hpp"
+#include "sanitizer_build.hpp"
 
 namespace attiguard::test::any_spacecraft {
 namespace {
@@ -38,7 +39,7 @@ std::string reason_class(const std::string& what) {
 }
 
 TEST(AnySpacecraft, EveryRandomCraftIsRejectedWithAReasonOrCompletes) {
-  const int runs = env_int("ATTIGUARD_ANY_SPACECRAFT_RUNS", 300);
+  const int runs = env_int("ATTIGUARD_ANY_SPACECRAFT_RUNS", static_cast<int>(for_this_build(300, 75)));
   const int threads = env_int("ATTIGUARD_ANY_SPACECRAFT_THREADS", 1);
   const unsigned long long seed = 13;
   std::vector<Verdict> verdicts(static_cast<std::size_t>(runs));

@@ -10,6 +10,7 @@
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
+#include "sanitizer_build.hpp"
 #include "test_support.hpp"
 
 namespace attiguard::guidance {
@@ -130,7 +131,7 @@ TEST(WaypointSequencerSweep, NoNanForRandomInitialStatesAndWaypointLists) {
   auto& g = test::rng();
   int completed = 0;
   long brake_samples = 0;
-  for (int trial = 0; trial < 1000; ++trial) {
+  for (long trial = 0; trial < test::for_this_build(1000, 250); ++trial) {
     sim::WaypointScenario sc;
     sc.name = "sweep";
     sc.R0_ib = test::random_rotation();

@@ -14,6 +14,8 @@
 #include "attiguard/reach/lmi_proof.hpp"
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/soundness.hpp"
+#include "reach/pd_example.hpp"
+#include "sanitizer_build.hpp"
 #include "test_support.hpp"
 
 namespace ar = attiguard::reach;
@@ -31,12 +33,8 @@ ar::StateMetric random_metric(std::mt19937& g) {
   return {M.topLeftCorner<3, 3>(), M.topRightCorner<3, 3>(), M.bottomRightCorner<3, 3>()};
 }
 
-const ar::PdLoop& pd_loop() {
-  static const ar::PdLoop loop(ar::Vec3(1.0, 2.0, 3.0).asDiagonal(), 2.0, 3.0,
-                               exp(ar::Vec3(0.0, 0.0, 20.0 * M_PI / 180.0)));
-  return loop;
-}
-ar::InitialSet pd_set() { return {ar::Mat3::Identity(), 0.05, ar::Vec3(0.1, -0.05, 0.05), 0.05}; }
+using attiguard::test::pd_loop;
+using attiguard::test::pd_set;
 ar::ConReachSettings coupled_settings() {
   ar::ConReachSettings s;
   s.horizon = 2.0;
@@ -161,7 +159,7 @@ TEST(ReachCoupledMetric, ConReachOnThePdLoopHasNegativeRatesAndIsSound) {
   // Tighter than the product metric at T (0.364 rad there, docs/reach.md).
   EXPECT_LT(res.steps.back().attitude_radius, 0.1);
   ar::SoundnessSettings s;
-  s.samples = 10000;
+  s.samples = attiguard::test::for_this_build(10000, 100);
   s.seed = 13;
   const ar::SoundnessReport rep = ar::check_soundness(pd_loop(), pd_set(), {pd_set()}, {res}, s);
   EXPECT_EQ(rep.inside, rep.samples) << "first violation at t = " << rep.first_violation_time;

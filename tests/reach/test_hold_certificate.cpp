@@ -63,8 +63,8 @@ TEST(HoldCertificate, CentreIsAHeldStateOfThePaperScenario) {
 
 TEST(HoldCertificate, CertificateExampleIsSafe) {
   const auto out = attiguard::test::fresh_dir("hold_certificate_out");
-  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_certificate.toml --out '" +
-                                          out.string() + "'");
+  const auto scenario = attiguard::test::reach_example_for_this_build("conreach_hold_certificate.toml");
+  const auto r = attiguard::test::run_cli("reach '" + scenario.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
   EXPECT_EQ(j["verdict"], "safe");
@@ -75,8 +75,8 @@ TEST(HoldCertificate, CertificateExampleIsSafe) {
 
 TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4) {
   const auto out = attiguard::test::fresh_dir("hold_too_large_out");
-  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_too_large.toml --out '" +
-                                          out.string() + "'");
+  const auto scenario = attiguard::test::reach_example_for_this_build("conreach_hold_too_large.toml");
+  const auto r = attiguard::test::run_cli("reach '" + scenario.string() + "' --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("cannot be proved"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
@@ -90,8 +90,8 @@ TEST(HoldCertificate, PartitionedSetIsSafeWhereOneBallCannotBeProved) {
   const auto sc = attiguard::scenario::parse_reach(doc);
   ASSERT_EQ(sc.attitude_cells, 3);
   const auto out = attiguard::test::fresh_dir("hold_partitioned_out");
-  const auto r = attiguard::test::run_cli("reach examples/conreach_hold_partitioned.toml --out '" +
-                                          out.string() + "'");
+  const auto scenario = attiguard::test::reach_example_for_this_build("conreach_hold_partitioned.toml");
+  const auto r = attiguard::test::run_cli("reach '" + scenario.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
   EXPECT_EQ(j["verdict"], "safe");
@@ -99,7 +99,7 @@ TEST(HoldCertificate, PartitionedSetIsSafeWhereOneBallCannotBeProved) {
   EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
 
   // The same set as one cell: the example without its [partition] table (its last table).
-  std::string text = attiguard::test::read_file(kSource / "examples/conreach_hold_partitioned.toml");
+  std::string text = attiguard::test::read_file(kSource / scenario);
   text = text.substr(0, text.find("[partition]"));
   const auto one = out / "one_ball.toml";
   std::ofstream(one) << text;
@@ -121,7 +121,7 @@ TEST(HoldCertificate, CoupledMetricProvesALargerSingleBallThanTheProductMetric) 
   };
   replace("attitude_radius = 0.02 ", "attitude_radius = 0.07 ");
   replace("omega_radius = 0.02 ", "omega_radius = 0.07 ");
-  replace("samples = 2000", "samples = 1000");
+  replace("samples = 2000", "samples = " + std::to_string(attiguard::test::for_this_build(1000, 100)));
   const auto out = attiguard::test::fresh_dir("hold_certificate_2x_out");
   const auto twice = out / "twice.toml";
   std::ofstream(twice) << text;

@@ -35,7 +35,8 @@ std::string paper_body(const std::string& initial_extra, const std::string& reac
 
 TEST(ReachCli, PaperExampleWritesReachJsonWithTheIssueKeys) {
   const auto out = fresh_dir("reach_paper_out");
-  const auto r = run_cli("reach examples/conreach_paper.toml --out '" + out.string() + "'");
+  const auto scenario = attiguard::test::reach_example_for_this_build("conreach_paper.toml");
+  const auto r = run_cli("reach '" + scenario.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
@@ -48,7 +49,7 @@ TEST(ReachCli, PaperExampleWritesReachJsonWithTheIssueKeys) {
   }
   EXPECT_EQ(j["steps"][0]["omega_box"]["lower"].size(), 3u);
   EXPECT_EQ(j["steps"][0]["omega_box"]["upper"].size(), 3u);
-  EXPECT_EQ(j["soundness"]["samples"].get<long>(), 10000);
+  EXPECT_EQ(j["soundness"]["samples"].get<long>(), attiguard::test::for_this_build(10000, 100));
   EXPECT_EQ(j["soundness"]["inside"].get<long>(), j["soundness"]["samples"].get<long>());
   EXPECT_EQ(j["verdict"], "safe");
   EXPECT_EQ(j["sdp_solves"].get<long>(), 120);
@@ -117,7 +118,8 @@ TEST(ReachCli, UnknownKeyAndMissingFileAreInvalidInput) {
 // escape found by the sampled and adversarial checks; the product metric loses the tube early.
 TEST(ReachCli, SlowPdLoopIsVerifiedOver60SecondsWithTheCoupledMetric) {
   const auto out = fresh_dir("reach_slow_pd_out");
-  const auto r = run_cli("reach examples/conreach_slow_pd.toml --out '" + (out / "c").string() + "'");
+  const auto scenario = attiguard::test::reach_example_for_this_build("conreach_slow_pd.toml");
+  const auto r = run_cli("reach '" + scenario.string() + "' --out '" + (out / "c").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(read_file(out / "c" / "reach.json"));
   EXPECT_EQ(j["metric"], "coupled");
@@ -132,7 +134,7 @@ TEST(ReachCli, SlowPdLoopIsVerifiedOver60SecondsWithTheCoupledMetric) {
   EXPECT_LT(j["adversarial"]["worst_ratio"].get<double>(), 1.0);
   EXPECT_GE(j["adversarial"]["attitude_tightness"].get<double>(), 1.0);
 
-  std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "examples/conreach_slow_pd.toml");
+  std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / scenario);
   text.replace(text.find("[soundness]"), 0, "metric = \"product\"\n\n");
   const auto product = out / "product.toml";
   std::ofstream(product) << text;

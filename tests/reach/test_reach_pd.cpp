@@ -9,18 +9,15 @@
 #include "attiguard/reach/partition.hpp"
 #include "attiguard/reach/safety.hpp"
 #include "attiguard/reach/soundness.hpp"
+#include "reach/pd_example.hpp"
 #include "test_support.hpp"
 
 namespace ar = attiguard::reach;
 using attiguard::lie::exp;
 
 namespace {
-const ar::PdLoop& pd_loop() {
-  static const ar::PdLoop loop(ar::Vec3(1.0, 2.0, 3.0).asDiagonal(), 2.0, 3.0,
-                               exp(ar::Vec3(0.0, 0.0, 20.0 * M_PI / 180.0)));
-  return loop;
-}
-ar::InitialSet pd_set() { return {ar::Mat3::Identity(), 0.05, ar::Vec3(0.1, -0.05, 0.05), 0.05}; }
+using attiguard::test::pd_loop;
+using attiguard::test::pd_set;
 ar::ConReachSettings pd_settings() {
   ar::ConReachSettings s;
   s.horizon = 2.0;

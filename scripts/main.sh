@@ -5,7 +5,7 @@
 # the main job: the three paper scenarios (PET-ERG, waypoint guidance, ConReach), the
 # hold-interval certificate, the constrained waypoint mission and the Python figure, with
 # summaries and figures in out/ and an index page out/index.md to open first.
-# Prints the time of each part (set-up, build, scenarios).
+# Prints the time of each part (set-up, build, scenarios: two at a time, one per core).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -25,18 +25,55 @@ cli=build/src/attiguard
 out=out
 mkdir -p "$out"
 
-# The first example of the README (rigid body under the PD law).
-$cli run examples/rigid_body_pd.toml --out "$out/rigid_body_pd" --plot
-# The three paper scenarios.
-$cli run examples/pet_erg_paper.toml --out "$out/pet_erg_paper" --plot
-$cli run examples/waypoint_paper.toml --out "$out/waypoint_paper" --plot
-$cli reach examples/conreach_paper.toml --out "$out/conreach_paper" --plot
-# The systems together: the PET-ERG's hold interval certified by ConReach, and the waypoint
-# mission through the PET-ERG (skipped when this build has no `mission` kind).
-$cli reach examples/conreach_hold_certificate.toml --out "$out/conreach_hold_certificate" --plot
-if $cli check examples/mission_sun_constrained.toml >/dev/null 2>&1; then
-  $cli run examples/mission_sun_constrained.toml --out "$out/mission_sun_constrained" --plot
-fi
+# scenario NAME ARGS...: `attiguard ARGS` with its stdout and stderr into out/NAME.log; prints
+# the log and fails when the command does.
+scenario() {
+  local name=$1
+  shift
+  if ! "$cli" "$@" > "$out/$name.log" 2>&1; then
+    cat "$out/$name.log" >&2
+    echo "main.sh: attiguard $* failed" >&2
+    return 1
+  fi
+}
+# Two lanes side by side (two cores), each a few seconds of scenarios and their figures.
+lane_papers() {
+  # The three paper scenarios.
+  scenario pet_erg_paper run examples/pet_erg_paper.toml --out "$out/pet_erg_paper" --plot
+  scenario waypoint_paper run examples/waypoint_paper.toml --out "$out/waypoint_paper" --plot
+  scenario conreach_paper reach examples/conreach_paper.toml --out "$out/conreach_paper" --plot
+}
+lane_systems() {
+  # The first example of the README (rigid body under the PD law).
+  scenario rigid_body_pd run examples/rigid_body_pd.toml --out "$out/rigid_body_pd" --plot
+  # The systems together: the PET-ERG's hold interval certified by ConReach, and the waypoint
+  # mission through the PET-ERG (skipped when this build has no `mission` kind).
+  scenario conreach_hold_certificate reach examples/conreach_hold_certificate.toml \
+    --out "$out/conreach_hold_certificate" --plot
+  if "$cli" check examples/mission_sun_constrained.toml > /dev/null 2>&1; then
+    scenario mission_sun_constrained run examples/mission_sun_constrained.toml \
+      --out "$out/mission_sun_constrained" --plot
+  fi
+}
+names=(rigid_body_pd pet_erg_paper waypoint_paper conreach_paper conreach_hold_certificate
+       mission_sun_constrained)
+for name in "${names[@]}"; do rm -f "$out/$name.log"; done
+lane_papers &
+papers=$!
+lane_systems &
+systems=$!
+failed=0
+wait "$papers" || failed=1
+wait "$systems" || failed=1
+((failed == 0)) || exit 1
+# Their stdout (the one-line outcome and the files written), in a fixed order.
+for name in "${names[@]}"; do
+  if [[ -f "$out/$name.log" ]]; then
+    echo "== $name"
+    cat "$out/$name.log"
+  fi
+done
+
 # A paper figure from the Python package (docs/python.md).
 if [[ -f build/python/attiguard/__init__.py ]]; then
   PYTHONPATH="$(pwd)/build/python" /usr/bin/python3 examples/python_pet_erg_figure.py "$out/python"

@@ -60,6 +60,9 @@ NONFINITE_TOKEN = re.compile(r"(?<![A-Za-z_])[-+]?(nan|inf|infinity)(?![A-Za-z_]
 
 
 SANITIZED = False
+# The sanitized build's work divisor of the long tests (kSanitizedWorkDivisor of
+# tests/sanitizer_build.hpp): its prefill's reach takes 1/16 of the example's soundness samples.
+SANITIZED_WORK_DIVISOR = 16
 
 
 def limit_resources() -> None:
@@ -110,12 +113,14 @@ def make_prefill(exe: Path, work: Path) -> Path:
     the union), every file dated PREFILL_TIME. Raises RuntimeError when a command fails."""
     ex = REPO / "examples"
     reach_example = ex / "conreach_paper.toml"
-    if SANITIZED:  # the same files from 1/16 of its 10^4 soundness samples (tests/sanitizer_build.hpp)
+    if SANITIZED:  # the same files from 1/SANITIZED_WORK_DIVISOR of its soundness samples
         reach_example = work / "conreach_paper.toml"
         text = (ex / "conreach_paper.toml").read_text()
-        if "\nsamples = 10000\n" not in text:
-            raise RuntimeError("prefill: examples/conreach_paper.toml no longer has samples = 10000")
-        reach_example.write_text(text.replace("\nsamples = 10000\n", "\nsamples = 625\n"))
+        found = re.search(r"\nsamples = (\d+)\n", text)
+        if found is None:
+            raise RuntimeError("prefill: examples/conreach_paper.toml has no [soundness] samples")
+        fewer = max(100, int(found.group(1)) // SANITIZED_WORK_DIVISOR)
+        reach_example.write_text(text[:found.start(1)] + str(fewer) + text[found.end(1):])
     commands = [
         ("pet", ["run", str(ex / "pet_erg_paper.toml"), "--out", "pet", "--plot"]),
         ("pet", ["view", "pet"]),

@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# The "any spacecraft" campaign of issue 13 (docs/waypoint.md, "Tuning"): RUNS random crafts
-# (default 10^4, seed 13; tests/guidance/any_spacecraft.hpp) through `check` and the waypoint
-# guidance on THREADS threads; prints the rejections by reason, the completion rate among the
-# accepted runs and the median delta-v / time over the ideal bang-coast-bang. Exits non-zero if
-# any accepted run ends incomplete, in NaN or in divergence. Needs build/ (scripts/build.sh).
-# Usage: scripts/waypoint_any_spacecraft.sh [RUNS] [THREADS]
+# The "any spacecraft" campaigns (docs/waypoint.md, "Tuning" and "Craft classes"): RUNS random
+# crafts of today's generator (issue 13, default 10^4, seed 13; tests/guidance/any_spacecraft.hpp)
+# and CLASS_RUNS crafts of each of the three classes of issue 25 (electric tugs, large chemical
+# craft, cold-gas CubeSats, default 60, seed 25; tests/guidance/craft_classes.hpp), on THREADS
+# threads. Prints the refusals by reason, the completion rates and the figures against the
+# ideal, the prediction and the user's estimate. Exits non-zero if an accepted run of today's
+# generator ends incomplete, if any run ends in NaN or divergence, or if a class completes less
+# than 90 % of its accepted runs. Needs build/ (scripts/build.sh).
+# Usage: scripts/waypoint_any_spacecraft.sh [RUNS] [THREADS] [CLASS_RUNS]
+#   10^4 crafts over today's range and the three classes: scripts/waypoint_any_spacecraft.sh 2500 2 2500
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ATTIGUARD_ANY_SPACECRAFT_RUNS="${1:-10000}" ATTIGUARD_ANY_SPACECRAFT_THREADS="${2:-2}" \
+  ATTIGUARD_CRAFT_CLASS_RUNS="${3:-60}" \
   exec build/tests/attiguard_tests --gtest_filter='AnySpacecraft.*'

@@ -75,6 +75,24 @@ TEST(RctPositionLaw, Erratum28PrintedSignDivergesCorrectedSignConverges) {
   EXPECT_LT((R * f_b - 100.0 * (0.02 * e - 0.5 * v)).norm(), 1e-12);
 }
 
+// Issue 25: far from the waypoint the position term asks for the braking curve's speed
+// √(2 b ‖e‖) instead of the switching line's λ‖e‖; inside 2b/λ² it is (28) unchanged.
+TEST(RctPositionLaw, BrakingCurveCapsTheApproachSpeedFarFromTheWaypoint) {
+  const RctPositionGains line{0.02, 0.5};
+  RctPositionGains curve = line;
+  curve.braking_acceleration = 0.001;  // 2b/λ² = 1.25 m with λ = 0.04 1/s
+  const lie::Mat3 R = test::random_rotation();
+  const Vec3 dir = Vec3(1.0, -2.0, 0.5).normalized();
+  const Vec3 v(0.01, 0.0, -0.02);
+  for (double d : {0.1, 0.5, 1.2}) {  // inside: identical
+    EXPECT_LT((rct_position_force(100.0, R, dir * d, v, curve) - rct_position_force(100.0, R, dir * d, v, line)).norm(), 1e-12);
+  }
+  for (double d : {2.0, 50.0, 5000.0}) {  // outside: κ_d (√(2 b d) ê − v)
+    const Vec3 expected = 100.0 * 0.5 * (std::sqrt(2.0 * 0.001 * d) * dir - v);
+    EXPECT_LT((R * rct_position_force(100.0, R, dir * d, v, curve) - expected).norm(), 1e-9 * expected.norm()) << d;
+  }
+}
+
 TEST(QuaternionPid, ErrorKinematicsMatchFiniteDifferences) {
   // ε̇ of (26) against the derivative of ε(q_{d,b}(t)) for a body and a desired frame both
   // rotating at constant rates.

@@ -27,6 +27,7 @@
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
+#include "attiguard/sim/waypoint_prediction.hpp"
 
 namespace attiguard::test::any_spacecraft {
 
@@ -34,7 +35,8 @@ namespace attiguard::test::any_spacecraft {
 struct Case {
   std::string toml;
   double ideal_delta_v{0.0};  ///< Σ legs of rest-to-rest bang-coast-bang at V_d, + ‖v0‖ [m/s]
-  double ideal_time{0.0};     ///< Σ legs of its duration [s]
+  double ideal_time{0.0};     ///< Σ legs of its duration [s] (craft classes: plus two wheel-limited half-turns)
+  double predicted_time{0.0};  ///< sim::predict_waypoint_mission's (craft classes only) [s]
 };
 
 inline double log_uniform(std::mt19937_64& g, double lo, double hi) {
@@ -141,6 +143,8 @@ struct Verdict {
   std::string reason;  ///< the check's message, the outcome reason, or the numerical error
   double delta_v_ratio{0.0};
   double time_ratio{0.0};
+  double predicted_ratio{0.0};  ///< mission time over sim::predict_waypoint_mission's (completed runs)
+  double fine_fraction{0.0};    ///< time in mode fine over the mission time (completed runs)
 };
 
 inline Verdict judge(const Case& c) {
@@ -167,6 +171,15 @@ inline Verdict judge(const Case& c) {
     for (const sim::WaypointResult& w : res.waypoints) dv += w.delta_v();
     v.delta_v_ratio = c.ideal_delta_v > 0.0 ? dv / c.ideal_delta_v : 0.0;
     v.time_ratio = c.ideal_time > 0.0 ? res.total_time / c.ideal_time : 0.0;
+    const double predicted = sim::predict_waypoint_mission(sc).time;
+    double t_fine = 0.0;
+    for (std::size_t i = 0; i < res.transitions.size(); ++i) {
+      if (res.transitions[i].to != guidance::Mode::fine) continue;
+      const double end = i + 1 < res.transitions.size() ? res.transitions[i + 1].t : res.total_time;
+      t_fine += end - res.transitions[i].t;
+    }
+    v.fine_fraction = res.total_time > 0.0 ? t_fine / res.total_time : 0.0;
+    v.predicted_ratio = predicted > 0.0 ? res.total_time / predicted : 0.0;
   } catch (const NumericalError& e) {
     v.kind = Verdict::failed;
     v.reason = e.what();

@@ -21,6 +21,7 @@
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/rigid_body_run.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
+#include "attiguard/sim/waypoint_prediction.hpp"
 
 namespace attiguard::app {
 
@@ -74,6 +75,11 @@ nlohmann::json run_with_sink(const RunOptions& options,
   return summary;
 }
 
+/// `check`'s report of a waypoint scenario: the mission prediction (docs/waypoint.md, "Prediction").
+std::string waypoint_check_report(const Document& doc) {
+  return sim::prediction_report(scenario::parse_waypoint(doc));
+}
+
 /// `check` of a simulation kind: parse (and validate) only.
 template <auto Parse>
 void check_kind(const Document& doc) {
@@ -123,7 +129,7 @@ constexpr std::array<KindHandler, 5> registry{{
      "decelerate/fine state machine)",
      &check_kind<&scenario::parse_waypoint>,
      &run_kind<&scenario::parse_waypoint, &sim::record_waypoint, &sim::waypoint_summary>,
-     &waypoint_outcome_line},
+     &waypoint_outcome_line, nullptr, &waypoint_check_report},
     {"mission",
      "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
      "slews; also flies the unconstrained twin",

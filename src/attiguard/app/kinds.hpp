@@ -43,6 +43,9 @@ struct KindHandler {
   /// hint (app/numerical_hints.hpp, docs/errors.md "Numerical failures"), or "" when none stands
   /// out; null for a kind without hints.
   std::string (*numerical_hint)(const scenario::Document& doc){nullptr};
+  /// What `attiguard check` prints after "OK" for a valid `doc` (kind waypoint: the mission-time
+  /// and Δv prediction, docs/waypoint.md "Prediction"), "" or null for nothing.
+  std::string (*check_report)(const scenario::Document& doc){nullptr};
 };
 
 /// Every registered kind.

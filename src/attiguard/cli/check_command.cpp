@@ -24,6 +24,7 @@ void check_command(const std::filesystem::path& scenario_path) {
   const app::KindHandler& handler = app::handler_for(doc);
   handler.check(doc);
   std::cout << "OK: " << scenario_path.string() << " (" << handler.name << ")\n";
+  if (handler.check_report != nullptr) std::cout << handler.check_report(doc);
 }
 
 }  // namespace attiguard::cli

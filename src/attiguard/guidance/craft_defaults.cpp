@@ -48,6 +48,8 @@ control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_acc
   return g;
 }
 
+double craft_rct_braking_acceleration(const CraftLimits& c) noexcept { return 0.5 * c.a_rct(); }
+
 double craft_rct_slope(const CraftLimits& c, double position_accuracy) noexcept {
   return std::min(std::sqrt(c.a_rct() / (12.5 * position_accuracy)), 0.1 / c.control_period);
 }

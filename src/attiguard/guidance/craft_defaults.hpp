@@ -63,6 +63,12 @@ struct CraftLimits {
 [[nodiscard]] control::RctPositionGains craft_rct_gains(const CraftLimits& c, double speed_accuracy,
                                                          double position_accuracy) noexcept;
 
+/// Braking curve of the RCT law far from the waypoint (RctPositionGains::braking_acceleration):
+/// half the RCT authority, a_rct/2 [m/s²], so that the on/off thrusters (firing at full f_max
+/// above their threshold) take out the speed of the curve √(a_rct ‖e‖) with a factor 2 to spare
+/// (docs/waypoint.md, "Fine control far from the waypoint").
+[[nodiscard]] double craft_rct_braking_acceleration(const CraftLimits& c) noexcept;
+
 /// Slope λ of the RCT switching line v = λ e: min(√(a_rct/(12.5 δ_p)), 0.1/T_s) [1/s] (see
 /// craft_kappa_p()).
 [[nodiscard]] double craft_rct_slope(const CraftLimits& c, double position_accuracy) noexcept;

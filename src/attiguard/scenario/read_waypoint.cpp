@@ -168,10 +168,14 @@ std::optional<TableReader> read_waypoint_fine_position(const TableReader& root, 
   const control::RctPositionGains craft_rct =
       guidance::craft_rct_gains(limits, mp.speed_accuracy, mp.position_accuracy);
   mp.rct = craft_rct;
+  const double craft_braking = paper ? 0.0 : guidance::craft_rct_braking_acceleration(limits);
+  mp.rct.braking_acceleration = craft_braking;
   std::optional<TableReader> fine = paper ? std::optional<TableReader>(root.table("fine_position"))
                                           : root.optional_table("fine_position");
   if (!fine) return fine;
-  declare(*fine, {"kappa_p", "kappa_d", "on_threshold"});
+  declare(*fine, {"kappa_p", "kappa_d", "on_threshold", "braking_acceleration"});
+  mp.rct.braking_acceleration =
+      fine->number_or("braking_acceleration", DerivedDefault{craft_braking}, NumberRule::non_negative());
   mp.rct.kappa_d = paper ? fine->number("kappa_d", NumberRule::positive())
                          : fine->number_or("kappa_d", DerivedDefault{craft_rct.kappa_d}, NumberRule::positive());
   // Craft profile: the derived κ_p with the κ_d in force (position control on).
@@ -304,7 +308,8 @@ void check_waypoint_rct_authority(const TableReader& craft, const TableReader& g
 }
 
 /// Reachability: every waypoint needs at least the bang-bang time of its leg, and one half-turn
-/// (the flip) at the wheels' torque limit per leg longer than the arrival radius.
+/// (the flip) at the wheels' torque limit per leg longer than the arrival radius that the main
+/// engine flies (not the legs inside half the re-plan distance, which the RCT fly).
 void check_waypoints_reachable(const std::vector<TableReader>& wps, const guidance::CraftLimits& limits,
                                const sim::WaypointScenario& sc) {
   const guidance::MissionParams& mp = sc.mission;
@@ -316,7 +321,9 @@ void check_waypoints_reachable(const std::vector<TableReader>& wps, const guidan
   for (std::size_t k = 0; k < sc.waypoints_i.size(); ++k) {
     const double leg = (sc.waypoints_i[k] - from).norm();
     t_min += 2.0 * std::sqrt(leg / a_max);
-    if (leg > mp.arrival_radius) t_flips += t_flip;
+    // A leg inside half the re-plan distance is flown by the RCT alone (no flip; start_leg).
+    const bool rct_leg = mp.rct.kappa_p > 0.0 && leg <= 0.5 * mp.replan_distance;
+    if (leg > mp.arrival_radius && !rct_leg) t_flips += t_flip;
     from = sc.waypoints_i[k];
     if (t_min + t_flips > sc.duration) {
       wps[k].fail("position",

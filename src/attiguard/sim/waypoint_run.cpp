@@ -1,4 +1,5 @@
 #include "attiguard/sim/waypoint_run.hpp"
+#include "attiguard/sim/waypoint_prediction.hpp"
 
 #include <algorithm>
 #include <array>
@@ -329,6 +330,7 @@ nlohmann::json waypoint_parameters_entry(const WaypointScenario& sc) {
           {"integral_zone", sc.gains.integral_zone},
           {"kappa_p", mp.rct.kappa_p},
           {"kappa_d", mp.rct.kappa_d},
+          {"rct_braking_acceleration", mp.rct.braking_acceleration},
           {"on_threshold", mp.rct_threshold},
           {"cruise_speed", mp.cruise_speed},
           {"acceleration_fraction", mp.acceleration_fraction},
@@ -352,6 +354,28 @@ nlohmann::json waypoint_parameters_entry(const WaypointScenario& sc) {
           {"duration", sc.duration}};
 }
 
+/// summary.json `prediction`, `predicted_time`, `time_over_predicted` and each leg's
+/// `predicted_time` and `time_over_predicted` (actual leg time over predicted; null when the
+/// leg or the mission was not completed) (docs/waypoint.md, "Prediction").
+void write_prediction_entries(nlohmann::json& summary, const guidance::MissionPrediction& pr,
+                              const WaypointSimResult& res) {
+  summary["prediction"] = prediction_entry(pr);
+  summary["predicted_time"] = pr.time;
+  summary["time_over_predicted"] =
+      res.completed && pr.time > 0.0 ? nlohmann::json(res.total_time / pr.time) : nlohmann::json(nullptr);
+  double previous_arrival = 0.0;
+  nlohmann::json& legs = summary["legs"];
+  for (std::size_t k = 0; k < legs.size() && k < pr.legs.size(); ++k) {
+    const WaypointResult& w = res.waypoints[k];
+    const double predicted = pr.legs[k].time;
+    legs[k]["predicted_time"] = predicted;
+    legs[k]["time_over_predicted"] = w.reached && predicted > 0.0
+                                         ? nlohmann::json((w.arrival_time - previous_arrival) / predicted)
+                                         : nlohmann::json(nullptr);
+    if (w.reached) previous_arrival = w.arrival_time;
+  }
+}
+
 }  // namespace
 
 nlohmann::json waypoint_summary(const WaypointScenario& sc, const WaypointSimResult& res) {
@@ -370,6 +394,7 @@ nlohmann::json waypoint_summary(const WaypointScenario& sc, const WaypointSimRes
   summary["transitions"] = transitions_entry(res);
   summary["mode_names"] = mode_names_entry();
   summary["parameters"] = waypoint_parameters_entry(sc);
+  write_prediction_entries(summary, predict_waypoint_mission(sc), res);
   return summary;
 }
 

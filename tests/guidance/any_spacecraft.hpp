@@ -8,7 +8,7 @@
 /// velocity, each written as a `waypoint` scenario file in profile "craft" (every guidance key
 /// derived) and judged: rejected up front by `check` (with its reason), completed, or not. Used by
 /// AnySpacecraft.* with a few hundred crafts and by scripts/waypoint_any_spacecraft.sh with 10⁴.
-/// Measured (seed 13, inertia-shaped attitude PID): 10⁴ crafts, 2367 rejected (all at
+/// Measured (seed 13, inertia-shaped attitude PID, before the RCT braking curve of issue 25): 10⁴ crafts, 2367 rejected (all at
 /// guidance.speed_accuracy), 7633 accepted, 7632 completed (99.99 %), 1 time-out (case 8249: the
 /// duration budget below is short for its RCT-flown legs), 0 NaN/divergence; median Δv/ideal
 /// 0.641, time/ideal 2.813. 300 crafts (the suite): 220 accepted, 220 completed.

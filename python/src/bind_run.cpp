@@ -24,6 +24,8 @@
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/read_reach.hpp"
+#include "attiguard/scenario/read_waypoint.hpp"
+#include "attiguard/sim/waypoint_prediction.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -175,6 +177,19 @@ std::string check_document(const py::object& source) {
   return std::string(handler.name);
 }
 
+/// The mission-time and Δv prediction of a `waypoint` scenario (docs/waypoint.md, "Prediction"):
+/// summary.json's `prediction` as JSON text. Validates like `attiguard check`; another kind is
+/// an InputError naming its `kind`.
+std::string predict_document(const py::object& source) {
+  const scenario::Document doc = document_of(source);
+  const app::KindHandler& handler = app::handler_for(doc);
+  if (handler.name != "waypoint") {
+    scenario::fail_at(doc, "kind", "the mission prediction (attiguard.predict) is for kind \"waypoint\", got \"" +
+                                       std::string(handler.name) + "\"");
+  }
+  return sim::prediction_entry(sim::predict_waypoint_mission(scenario::parse_waypoint(doc))).dump();
+}
+
 /// ConReach on a `reach` scenario [ConReach Alg. 1]; returns reach.json's text.
 /// VerificationFailure propagates after reach.json has been written.
 std::string reach_document(const py::object& source, const std::string& out_dir) {
@@ -193,6 +208,7 @@ std::string reach_document(const py::object& source, const std::string& out_dir)
 void bind_run(py::module_& m) {
   m.def("_run", &run_document, py::arg("source"), py::arg("out_dir") = py::none());
   m.def("_check", &check_document, py::arg("source"));
+  m.def("_predict", &predict_document, py::arg("source"));
   m.def("_reach", &reach_document, py::arg("source"), py::arg("out_dir"));
 }
 

@@ -104,6 +104,17 @@ def test_check_returns_kind():
     assert ag.check(load("rigid_body_pd.toml")) == "rigid_body"
 
 
+def test_predict_gives_the_waypoint_prediction_and_refuses_other_kinds():
+    p = ag.predict(EXAMPLES / "waypoint_paper.toml")
+    assert len(p["legs"]) == 3
+    assert p["time"] == pytest.approx(sum(leg["time"] for leg in p["legs"]))
+    assert 0.9 * 3240.4 < p["time"] < 1.1 * 3240.4  # the flown mission (docs/waypoint.md)
+    assert ag.run(EXAMPLES / "waypoint_paper.toml").summary["prediction"] == p
+    with pytest.raises(ag.InputError) as info:
+        ag.predict(load("rigid_body_pd.toml"))
+    assert "kind" in str(info.value) and "waypoint" in str(info.value)
+
+
 # ---- errors: same messages as the CLI ---------------------------------------------------------
 
 def test_input_error_from_file_has_the_cli_message():

@@ -59,6 +59,14 @@ def check(scenario: Scenario) -> str:
     return _core._check(_source(scenario))
 
 
+def predict(scenario: Scenario) -> dict[str, Any]:
+    """The mission-time and delta-v prediction of a `waypoint` scenario, as `attiguard check`
+    prints it and summary.json's `prediction` holds it (docs/waypoint.md, "Prediction"): a dict
+    with `time` [s], `delta_v` [m/s] and `legs` (each `time`, `delta_v`, `turn_time`,
+    `fine_time`, `peak_speed`, `rct_only`). Validates like `check`; raises InputError."""
+    return dict(json.loads(_core._predict(_source(scenario))))
+
+
 def run(scenario: Scenario, out: str | os.PathLike | None = None) -> RunResult:
     """Runs a scenario like `attiguard run SCENARIO --out OUT` and returns a RunResult: the time
     series (the columns of trajectory.csv) as numpy arrays (result.series, result["t"]) and the

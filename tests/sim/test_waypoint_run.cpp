@@ -142,6 +142,27 @@ TEST(WaypointRun, HeavyCraftsRctLegFollowsTheBrakingCurveAndMeetsThePrediction) 
               s["predicted_time"].get<double>(), ratio);
 }
 
+// `attiguard check` prints the prediction of every leg and of the mission (docs/waypoint.md,
+// "Prediction"), and warns, exit 0, when simulation.duration is shorter than the prediction.
+TEST(WaypointCli, CheckPrintsThePredictionAndWarnsOfAShortDuration) {
+  const test::CliResult ok = test::run_cli("check tests/data/waypoint/heavy_short_first_leg.toml");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("predicted leg 0: "), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("RCT only"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("predicted leg 1: "), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("predicted mission: "), std::string::npos) << ok.out;
+  EXPECT_EQ(ok.out.find("warning"), std::string::npos) << ok.out;
+  const auto dir = test::fresh_dir("waypoint_short_duration");
+  std::string text = test::read_file(std::string(ATTIGUARD_SOURCE_DIR) + "/tests/data/waypoint/heavy_short_first_leg.toml");
+  text.replace(text.find("duration = 20000.0"), 18, "duration = 9000.0");
+  { std::ofstream(dir / "short.toml") << text; }
+  const test::CliResult warned = test::run_cli("check '" + (dir / "short.toml").string() + "'");
+  EXPECT_EQ(warned.exit_code, 0) << warned.err;
+  EXPECT_NE(warned.out.find("warning: simulation.duration 9000.0 s is shorter than the predicted mission time"),
+            std::string::npos) << warned.out;
+  std::filesystem::remove_all(dir);
+}
+
 // The paper example (Tables I-II): predicted within 10 % of the flown 3240.4 s.
 TEST(WaypointRun, PaperExampleIsPredictedWithinTenPerCent) {
   const sim::WaypointScenario sc = load("examples/waypoint_paper.toml");

@@ -518,6 +518,7 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
                       "v_i": VEC(), "dt": Arg(_pos(1e-3, 1.0), hostile_positive)}, True),
     "run": (_fn("run"), {"scenario": SCEN(), "out": Arg(_const(None), hostile_out)}, False),
     "check": (_fn("check"), {"scenario": SCEN()}, False),
+    "predict": (_fn("predict"), {"scenario": SCEN()}, False),
     "reach": (_fn("reach"), {"scenario": SCEN(), "out": Arg(_const(None), hostile_out),
                              "raise_on_failure": Arg(_const(True), hostile_bool)}, False),
     "to_toml": (_fn("to_toml"), {"scenario": Arg(lambda rng: _small_scenario(), hostile_scenario)}, True),
@@ -683,7 +684,7 @@ def test_every_argument_has_a_spec():
         if inspect.isclass(fn):
             fn = fn.__init__
         doc = (fn.__doc__ or "").splitlines()
-        if not doc or "(" not in doc[0] or name in ("run", "check", "reach", "to_toml"):
+        if not doc or "(" not in doc[0] or name in ("run", "check", "predict", "reach", "to_toml"):
             params = [p for p in inspect.signature(fn).parameters]
         else:  # "name(self: X, a: T, *, b: T = …) -> R"
             inside = doc[0][doc[0].index("(") + 1: doc[0].rindex(")")]

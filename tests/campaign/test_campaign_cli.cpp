@@ -107,6 +107,29 @@ TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 25: `[dispersions]` draws waypoint lists (type waypoints, docs/campaigns.md). Every run
+// flies its own list to completion; runs.csv has the count and the positions; a replayed run's
+// resolved scenario holds its list and matches its row.
+TEST(CampaignCli, WaypointListsAreDrawnFlownAndReplayed) {
+  const auto dir = fresh_dir("campaign_waypoint_lists");
+  const std::string file = "tests/data/campaign/waypoint_lists.toml";
+  const auto r = campaign(file, dir, "--runs 6 --seed 3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read_file(dir / "runs.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_NE(header.find("waypoints.count,waypoints[0].x,waypoints[0].y,waypoints[0].z"), std::string::npos) << header;
+  EXPECT_NE(header.find("waypoints[2].z"), std::string::npos) << header;
+  const auto summary = nlohmann::json::parse(read_file(dir / "campaign.json"));
+  EXPECT_EQ(summary["ok"].get<int>(), 6) << summary.dump();
+  EXPECT_EQ(summary["outcomes"]["completed"].get<int>(), 6) << summary.dump();
+  const auto replay = campaign(file, dir, "--seed 3 --replay 4");
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  EXPECT_NE(replay.out.find("identical to its row in runs.csv"), std::string::npos) << replay.out;
+  const std::string resolved = read_file(dir / "run_4/scenario.resolved.toml");
+  EXPECT_NE(resolved.find("[[waypoints]]"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CampaignCli, ResumeAfterAnInterruptionGivesTheSameResult) {
   const auto dir = fresh_dir("campaign_resume");
   ASSERT_EQ(campaign(kExample, dir / "full", "--runs 30 --seed 2").exit_code, 0);

@@ -161,13 +161,42 @@ void read_direction_entry(const scenario::TableReader& t, Dispersion& d, const t
   d.half_angle = kDeg * t.number("half_angle_deg", {0.0, 180.0, true, false});
 }
 
+/// A `waypoints` entry (docs/campaigns.md, "[dispersions]"): the key must be the scenario's
+/// array of tables `waypoints` whose tables hold only `position`.
+void read_waypoints_entry(const scenario::TableReader& t, Dispersion& d, const toml::node& value) {
+  d.type = DispersionType::waypoints;
+  const toml::array* a = value.as_array();
+  bool tables = d.key == "waypoints" && a != nullptr && a->is_array_of_tables();
+  if (tables) {
+    for (const auto& w : *a) tables = tables && w.as_table()->size() == 1 && w.as_table()->contains("position");
+  }
+  if (!tables) {
+    t.fail_here("'" + d.key + "' is not the scenario's [[waypoints]] (an array of tables holding only "
+                "'position'): type \"waypoints\" draws the whole list");
+  }
+  d.count_min = t.integer_or("count_min", 1, 1, kMaxDispersedWaypoints);
+  d.count_max = t.integer_or("count_max", std::max<long>(d.count_min, static_cast<long>(a->size())), 1,
+                             kMaxDispersedWaypoints);
+  if (d.count_max < d.count_min) {
+    t.fail("count_max", "must be >= count_min (" + std::to_string(d.count_min) + "), got " +
+                            std::to_string(d.count_max));
+  }
+  d.leg_min = t.number("leg_min", scenario::NumberRule{0.0, kMaxDispersedLeg, true, false});
+  d.leg_max = t.number("leg_max", scenario::NumberRule{0.0, kMaxDispersedLeg, true, false});
+  if (d.leg_max < d.leg_min) {
+    t.fail("leg_max", "must be >= leg_min (" + detail::format_number(d.leg_min) + "), got " +
+                          detail::format_number(d.leg_max));
+  }
+  d.turn_max = kDeg * t.number_or("turn_max_deg", 180.0, scenario::NumberRule{0.0, 180.0, true, false});
+}
+
 /// Reads one `[dispersions]` entry (docs/campaigns.md, "Dispersions").
 Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
                       const scenario::Document& nominal) {
   Dispersion d;
   d.key = key;
-  static constexpr std::array<std::string_view, 5> kTypes{"number", "vector", "inertia",
-                                                          "attitude", "direction"};
+  static constexpr std::array<std::string_view, 6> kTypes{"number", "vector", "inertia",
+                                                          "attitude", "direction", "waypoints"};
   const std::string type = t.string_or("type", "number", kTypes);
   const auto pos = resolve_key_path(root_table(nominal), key);
   if (!pos) t.fail_here("no value at key path '" + key + "' in the scenario");
@@ -181,6 +210,8 @@ Dispersion read_entry(const scenario::TableReader& t, const std::string& key,
                                           scenario::NumberRule::range(0.0, 180.0));
   } else if (type == "attitude") {
     read_attitude_entry(t, d, value);
+  } else if (type == "waypoints") {
+    read_waypoints_entry(t, d, value);
   } else {
     read_direction_entry(t, d, value);
   }
@@ -336,6 +367,12 @@ std::vector<std::string> dispersion_columns(const DispersionPlan& plan) {
       case DispersionType::direction:
         for (const char* s : {".x", ".y", ".z"}) cols.push_back(d.key + s);
         break;
+      case DispersionType::waypoints:
+        cols.push_back(d.key + ".count");
+        for (long i = 0; i < d.count_max; ++i) {
+          for (const char* s : {"].x", "].y", "].z"}) cols.push_back(d.key + "[" + std::to_string(i) + s);
+        }
+        break;
     }
   }
   return cols;
@@ -425,6 +462,38 @@ void apply_direction(const Dispersion& d, const toml::node& nom, campaign::Rng& 
   assign_key_path(root, d.key, array3(n));
 }
 
+/// A `waypoints` draw: count uniform in [count_min, count_max], legs log-uniform in
+/// [leg_min, leg_max] from [initial] position (the origin when absent), the first direction
+/// uniform on the sphere and each next within turn_max of the previous; the count, then x y z
+/// of every slot up to count_max (0 beyond the count) in `values`.
+void apply_waypoints(const Dispersion& d, const scenario::Document& nominal, campaign::Rng& rng,
+                     toml::table& root, std::vector<double>& values) {
+  Vec3 p = Vec3::Zero();
+  if (const toml::node* p0 = resolve_key_path(root_table(nominal), "initial.position")) {
+    if (const toml::array* a = p0->as_array(); a != nullptr && a->size() == 3) {
+      p = Vec3(as_double(*a->get(0)), as_double(*a->get(1)), as_double(*a->get(2)));
+    }
+  }
+  const long span = d.count_max - d.count_min + 1;
+  const long n = d.count_min + std::min(span - 1, static_cast<long>(rng.uniform01() * static_cast<double>(span)));
+  values.push_back(static_cast<double>(n));
+  toml::array list;
+  Vec3 dir = unit_vector(rng);
+  for (long i = 0; i < d.count_max; ++i) {
+    if (i >= n) {
+      values.insert(values.end(), {0.0, 0.0, 0.0});
+      continue;
+    }
+    if (i > 0) dir = cap_vector(dir, d.turn_max, rng);
+    p += dir * std::exp(rng.uniform(std::log(d.leg_min), std::log(d.leg_max)));
+    values.insert(values.end(), {p(0), p(1), p(2)});
+    toml::table w;
+    w.insert("position", array3(p));
+    list.push_back(std::move(w));
+  }
+  assign_key_path(root, d.key, std::move(list));
+}
+
 }  // namespace
 
 void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nominal, campaign::Rng& rng,
@@ -448,6 +517,9 @@ void apply_dispersions(const DispersionPlan& plan, const scenario::Document& nom
         break;
       case DispersionType::direction:
         apply_direction(d, *nom, rng, root, values);
+        break;
+      case DispersionType::waypoints:
+        apply_waypoints(d, nominal, rng, root, values);
         break;
     }
   }

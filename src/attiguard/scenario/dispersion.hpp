@@ -10,6 +10,8 @@
 ///   "body.inertia"         = { type = "inertia", moments_rel_sigma = 0.1, axes_max_angle_deg = 5 }
 ///   "initial.attitude"     = { type = "attitude", mode = "ball", max_angle_deg = 20 }
 ///   "cones[0].direction_i" = { type = "direction", half_angle_deg = 5 }
+///   "waypoints"            = { type = "waypoints", count_min = 1, count_max = 4,
+///                              leg_min = 20.0, leg_max = 5e4, turn_max_deg = 90 }
 
 #include <string>
 #include <vector>
@@ -21,7 +23,7 @@
 namespace attiguard::scenario {
 
 /// What a dispersion changes.
-enum class DispersionType { number, vector, inertia, attitude, direction };
+enum class DispersionType { number, vector, inertia, attitude, direction, waypoints };
 /// Distribution of a scalar (number, and each component of a vector).
 enum class Distribution { uniform, normal, truncated_normal };
 /// Attitude dispersion: uniform on SO(3), or uniform within a geodesic ball around the nominal.
@@ -47,7 +49,19 @@ struct Dispersion {
   double max_angle{0.0};           ///< rad (attitude ball)
   // direction
   double half_angle{0.0};          ///< rad: uniform on the spherical cap around the nominal
+  // waypoints: a new list of count_min … count_max legs from [initial] position
+  long count_min{1};
+  long count_max{1};
+  double leg_min{0.0};             ///< [m], legs log-uniform in [leg_min, leg_max]
+  double leg_max{0.0};
+  double turn_max{0.0};            ///< rad: each leg's direction within this cap of the previous
 };
+
+/// Most waypoints a `waypoints` dispersion draws (docs/campaigns.md, "[dispersions]").
+inline constexpr long kMaxDispersedWaypoints = 64;
+/// Longest leg a `waypoints` dispersion draws [m]: 64 legs of it stay inside the waypoint
+/// kinds' bound of one light-year from the origin.
+inline constexpr double kMaxDispersedLeg = 1e14;
 
 /// The parsed dispersions of a campaign and the scenario they apply to.
 struct DispersionPlan {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 #include <filesystem>
 #include <string>
 #include <unistd.h>
@@ -12,6 +14,8 @@
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/document_edit.hpp"
+#include "attiguard/scenario/read_pet_erg.hpp"
+#include "attiguard/governor/default_gains.hpp"
 
 namespace attiguard::app {
 namespace {
@@ -125,19 +129,35 @@ TEST(TuneSearch, CandidateSetsTheKeysAndAddsAnAbsentOne) {
 }
 
 // The default space is centred on the parsed values (the parser's defaults for absent keys).
-TEST(TuneSearch, DefaultSpaceIsCentredOnTheParsedValues) {
-  const auto p = default_tune_parameters(source_file("tests/data/campaign/pet_erg_stalling.toml"));
-  ASSERT_EQ(p.size(), 5u);
+TEST(TuneSearch, DefaultSpaceIsCentredOnTheCraftsDerivedValuesAndScaledByThem) {
+  // the paper's gains in the file do not move the space: it is the craft's (docs/pet-erg.md 15)
+  const scenario::Document doc = source_file("tests/data/campaign/pet_erg_stalling.toml");
+  const auto p = default_tune_parameters(doc);
+  ASSERT_EQ(p.size(), 3u);
   EXPECT_EQ(p[0].key, "control.kp");
-  EXPECT_DOUBLE_EQ(p[0].min, 5.0 / 30.0);
-  EXPECT_DOUBLE_EQ(p[0].max, 150.0);
-  EXPECT_EQ(p[2].key, "erg.kappa");  // no [erg] in that file: kappa = 1
-  EXPECT_DOUBLE_EQ(p[2].min, 0.1);
-  EXPECT_DOUBLE_EQ(p[2].max, 100.0);
-  EXPECT_EQ(p[3].key, "erg.sampling_period");  // T_s = 0.5 s
-  EXPECT_DOUBLE_EQ(p[3].max, 2.0);
-  EXPECT_EQ(p[4].key, "erg.c_gamma");
-  EXPECT_DOUBLE_EQ(p[4].min, 1.01);
+  EXPECT_EQ(p[1].key, "control.kd");
+  EXPECT_EQ(p[2].key, "erg.sampling_period");
+  const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
+  const governor::DerivedGovernorValues d = governor::derive_governor_values(sim::craft_scales(sc), {});
+  const TuneSpaceConstants k;
+  EXPECT_NEAR(std::sqrt(p[0].min * p[0].max), d.kp, 1e-12 * d.kp);
+  EXPECT_NEAR(p[0].max / p[0].min, k.stiffness * k.stiffness, 1e-9);
+  EXPECT_NEAR(std::sqrt(p[1].min * p[1].max), d.kd, 1e-12 * d.kd);
+  EXPECT_NEAR(std::sqrt(p[2].min * p[2].max), d.Ts, 1e-12 * d.Ts);
+  EXPECT_NE(d.kp, 5.0);
+  // 10^3 times the torque: k_p ∝ τ, T_s ∝ 1/√τ (the inertia's scaling: DefaultGains tests)
+  scenario::Document strong = doc;
+  scenario::set_number(strong, "control.tau_max", 2.5e3);
+  const auto q = default_tune_parameters(strong);
+  EXPECT_NEAR(q[0].min / p[0].min, 1e3, 1e-9);
+  EXPECT_NEAR(q[2].min / p[2].min, 1.0 / std::sqrt(1e3), 1e-9);
+}
+
+TEST(TuneSearch, BestOnABoundIsReported) {
+  const std::vector<TuneParameter> space{{"control.kp", 1.0, 100.0}, {"control.kd", 1.0, 100.0}};
+  EXPECT_TRUE(keys_on_bound(space, {10.0, 10.0}).empty());
+  EXPECT_EQ(keys_on_bound(space, {1.05, 10.0}), std::vector<std::string>{"control.kp"});
+  EXPECT_EQ(keys_on_bound(space, {10.0, 99.0}), std::vector<std::string>{"control.kd"});
 }
 
 TEST(TuneSearch, BadRangesAndSpacesAreInputErrors) {

@@ -52,8 +52,17 @@ TEST(ResolvedScenario, WritesTheDefaultsOfATableLeftOut) {
   const Document doc = parse_document(kFlightLoop, "loop.toml");
   const std::string resolved = resolve_scenario(doc, &check_pet_erg);
   EXPECT_TRUE(contains(resolved, "[erg]"));
-  EXPECT_TRUE(contains(resolved, "sampling_period = 0.5"));
-  EXPECT_TRUE(contains(resolved, "c_gamma = 3.0"));
+  EXPECT_TRUE(contains(resolved, "epsilon_gamma = 0.1"));  // a constant default
+  // the values derived from the craft (docs/pet-erg.md, section 8), as the run used them
+  const sim::PetErgScenario sc = parse_pet_erg(doc);
+  EXPECT_TRUE(sc.derived.Ts_derived && sc.derived.kappa_derived && sc.derived.c_gamma_derived);
+  EXPECT_TRUE(contains(resolved, "c_gamma = 1.2"));
+  EXPECT_TRUE(contains(resolved, "sampling_period = "));
+  const sim::PetErgScenario again = parse_pet_erg(parse_document(resolved, "loop.resolved.toml"));
+  EXPECT_EQ(again.params.Ts, sc.params.Ts);
+  EXPECT_EQ(again.params.kappa, sc.params.kappa);
+  EXPECT_EQ(again.params.epsilon, sc.params.epsilon);
+  EXPECT_EQ(again.integrator.step, sc.integrator.step);
 }
 
 TEST(ResolvedScenario, DerivedDefaultsAreLeftOutOfACampaignOnly) {
@@ -67,6 +76,7 @@ TEST(ResolvedScenario, DerivedDefaultsAreLeftOutOfACampaignOnly) {
   const std::string resolved = resolve_campaign(doc, &check_pet_erg);
   EXPECT_FALSE(contains(resolved, "rate_bias_bound"));
   EXPECT_TRUE(contains(resolved, "torque_quantum = 0.0"));  // a constant default
+  EXPECT_FALSE(contains(resolved, "kappa"));  // derived from the craft: each run derives its own
   EXPECT_TRUE(contains(resolved, "[dispersions]"));
   // The defaults of the quoted [dispersions] entries (`type`) are not written: the campaign
   // file still reads (before, `dispersions."control.kp".type` made a table named '"control').

@@ -19,6 +19,7 @@
 #include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/mission_run.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/derived_values_json.hpp"
 #include "attiguard/sim/rigid_body_run.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 #include "attiguard/sim/waypoint_prediction.hpp"
@@ -75,6 +76,12 @@ nlohmann::json run_with_sink(const RunOptions& options,
   return summary;
 }
 
+/// `check`'s report of a pet_erg scenario: its governor values, given or derived from the craft
+/// (docs/pet-erg.md, section 8).
+std::string pet_erg_check_report(const Document& doc) {
+  return sim::derived_values_report(sim::governor_values(scenario::parse_pet_erg(doc)));
+}
+
 /// `check`'s report of a waypoint scenario: the mission prediction (docs/waypoint.md, "Prediction").
 std::string waypoint_check_report(const Document& doc) {
   return sim::prediction_report(scenario::parse_waypoint(doc));
@@ -123,7 +130,7 @@ constexpr std::array<KindHandler, 5> registry{{
      "constrained attitude control: PD law [PET-ERG eq. (3)] with [PET-ERG eqs. (5)-(6)], the ERG [PET-ERG eq. (4)], or none",
      &check_kind<&scenario::parse_pet_erg>,
      &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>,
-     &pet_erg_outcome_line, &pet_erg_numerical_hint},
+     &pet_erg_outcome_line, &pet_erg_numerical_hint, &pet_erg_check_report},
     {"waypoint",
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",

@@ -290,6 +290,13 @@ std::string tune_outcome_line(const json& tune) {
       if (!values.empty()) b += " at " + values;
     }
     line.part(b);
+    if (tune.contains("best_on_bound") && tune["best_on_bound"].is_array() && !tune["best_on_bound"].empty()) {
+      std::string keys;
+      for (const json& k : tune["best_on_bound"]) {
+        if (k.is_string()) keys += (keys.empty() ? "" : ", ") + k.get<std::string>();
+      }
+      line.part("best on a bound of its range: " + keys + " (widen it with --range)");
+    }
   }
   const json& own = tune.is_object() && tune.contains("nominal") ? tune["nominal"] : json();
   if (const auto t = number(own, "convergence_time")) {

@@ -12,6 +12,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/one_line.hpp"
 #include "attiguard/scenario/document_edit.hpp"
+#include "attiguard/governor/default_gains.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
 
 namespace attiguard::app {
@@ -87,13 +88,36 @@ std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nom
     throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
                                              "pet_erg scenario, not '" + scenario::scenario_kind(nominal) + "'");
   }
-  // Centred on the values the parser reads (its defaults where the file has no key).
+  // Centred on the values derived from the craft alone (docs/pet-erg.md, section 8), whatever
+  // the file gives, and scaled by them: each range is a fixed log-range of a dimensionless group.
   const sim::PetErgScenario sc = scenario::parse_pet_erg(nominal);
-  return {{"control.kp", sc.params.gains.kp / 30.0, sc.params.gains.kp * 30.0},
-          {"control.kd", sc.params.gains.kd / 30.0, sc.params.gains.kd * 30.0},
-          {"erg.kappa", sc.params.kappa / 10.0, sc.params.kappa * 100.0},
-          {"erg.sampling_period", sc.params.Ts / 25.0, sc.params.Ts * 4.0},
-          {"erg.c_gamma", 1.01, std::max(10.0, sc.params.c_gamma)}};
+  governor::DerivedGovernorValues d;
+  try {
+    d = governor::derive_governor_values(sim::craft_scales(sc), {});
+  } catch (const SetupError& e) {
+    throw InputError(nominal.path.string() + ": attiguard tune: " + e.what());
+  }
+  const TuneSpaceConstants k;
+  // T_s no shorter than the flight loop's period (the trigger is evaluated at control instants).
+  const double Ts_floor = std::max(d.Ts / k.sampling_period, sc.control_period);
+  // κ and c_Γ are not searched by default: the convergence time is monotone in them and flat
+  // beyond the derived values (docs/pet-erg.md, section 15), so their best would sit on a bound.
+  return {{"control.kp", d.kp / k.stiffness, d.kp * k.stiffness},
+          {"control.kd", d.kd / k.damping, d.kd * k.damping},
+          {"erg.sampling_period", Ts_floor, std::max(Ts_floor, d.Ts * k.sampling_period)}};
+}
+
+std::vector<std::string> keys_on_bound(const std::vector<TuneParameter>& parameters,
+                                       const std::vector<double>& values, double fraction) {
+  std::vector<std::string> keys;
+  for (std::size_t i = 0; i < parameters.size() && i < values.size(); ++i) {
+    const TuneParameter& p = parameters[i];
+    if (!(p.max > p.min)) continue;
+    const double width = std::log(p.max / p.min);
+    const double at = std::log(values[i] / p.min) / width;
+    if (at <= fraction || at >= 1.0 - fraction) keys.push_back(p.key);
+  }
+  return keys;
 }
 
 TuneParameter parse_tune_range(const std::string& text) {
@@ -276,6 +300,7 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
     const TunePoint& b = r.points[*r.best];
     j["outcome"] = "found";
     j["best"] = point_json(s.parameters, b);
+    j["best_on_bound"] = keys_on_bound(s.parameters, b.values);
     j["convergence_time"] = *b.convergence_time;
     j["convergence_time_over_bang_bang"] = b.ratio ? nlohmann::json(*b.ratio) : nlohmann::json(nullptr);
   } else {

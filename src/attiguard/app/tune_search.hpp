@@ -63,11 +63,25 @@ struct TuneResult {
   TunePoint nominal;                 ///< the scenario as given (values: its keys, NaN if absent)
 };
 
-/// Default search space around the scenario's values (as parsed: the defaults where a key is
-/// absent): control.kp and control.kd in [x/30, 30 x], erg.kappa in [κ/10, 100 κ],
-/// erg.sampling_period in [T_s/25, 4 T_s], erg.c_gamma in [1.01, max(10, c_Γ)]
-/// (docs/pet-erg.md, section 15). Throws InputError when the scenario is not pet_erg.
+/// The half-widths (factors) of the default search space around the values derived from the
+/// craft (docs/pet-erg.md, section 15): each key is searched log-uniformly on [x/f, x f], i.e.
+/// over a fixed range of its dimensionless group (c_p = k_p θ_ref/τ_eff, ζ, T_s ω_n).
+struct TuneSpaceConstants {
+  double stiffness{10.0};       ///< k_p: c_p in [0.8, 80]
+  double damping{5.0};          ///< k_d: ζ in [0.1, 2.5]
+  double sampling_period{10.0}; ///< T_s: T_s ω_n in [0.025, 2.5] (not below the control period)
+};
+
+/// Default search space, centred on the values governor::derive_governor_values derives from the
+/// craft alone (whatever the file gives) and scaled by TuneSpaceConstants (docs/pet-erg.md,
+/// sections 8 and 15). Throws InputError when the scenario is not pet_erg.
 [[nodiscard]] std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal);
+
+/// The keys whose value lies within `fraction` of its log-range from a bound (docs/pet-erg.md,
+/// section 15): tune.json's `best_on_bound`, and a warning on stdout.
+[[nodiscard]] std::vector<std::string> keys_on_bound(const std::vector<TuneParameter>& parameters,
+                                                     const std::vector<double>& values,
+                                                     double fraction = 0.02);
 
 /// Parses "KEY=MIN:MAX" (docs/pet-erg.md, "Tuning"); throws InputError naming the option.
 [[nodiscard]] TuneParameter parse_tune_range(const std::string& text);

@@ -218,16 +218,45 @@ void parse_erg_table(const TableReader& root, governor::GovernorParams& params) 
 }
 
 TableReader parse_governor_block(const TableReader& root, governor::GovernorParams& params,
-                                 std::initializer_list<std::string_view> control_extra) {
+                                 std::initializer_list<std::string_view> control_extra,
+                                 Gains gains) {
   params.mode = enum_or(root, "governor", governor::kGovernorModeNames, governor::GovernorMode::pet);
   const TableReader control = root.table("control");
   declare(control, {"kp", "kd", "tau_max"});
   declare(control, control_extra);
-  params.gains.kp = control.number("kp", NumberRule::positive());
-  params.gains.kd = control.number("kd", NumberRule::positive());
+  if (gains == Gains::required || control.has("kp")) {
+    params.gains.kp = control.number("kp", NumberRule::positive());
+  }
+  if (gains == Gains::required || control.has("kd")) {
+    params.gains.kd = control.number("kd", NumberRule::positive());
+  }
   params.tau_max = control.number("tau_max", NumberRule::positive());
   parse_erg_table(root, params);
   return control;
+}
+
+governor::GivenGovernorValues given_governor_values(const TableReader& root,
+                                                   const governor::GovernorParams& params) {
+  const TableReader control = root.table("control");
+  const TableReader erg = root.table_or_empty("erg");
+  governor::GivenGovernorValues given;
+  if (control.has("kp")) given.kp = params.gains.kp;
+  if (control.has("kd")) given.kd = params.gains.kd;
+  if (erg.has("kappa")) given.kappa = params.kappa;
+  if (erg.has("sampling_period")) given.Ts = params.Ts;
+  if (erg.has("c_gamma")) given.c_gamma = params.c_gamma;
+  if (erg.has("epsilon")) given.epsilon = params.epsilon;
+  return given;
+}
+
+void apply_governor_values(const governor::DerivedGovernorValues& values,
+                           governor::GovernorParams& params) {
+  params.gains.kp = values.kp;
+  params.gains.kd = values.kd;
+  params.kappa = values.kappa;
+  params.Ts = values.Ts;
+  params.c_gamma = values.c_gamma;
+  params.epsilon = values.epsilon;
 }
 
 governor::AttitudeGovernor make_governor(const TableReader& t, std::string_view where,

@@ -18,6 +18,7 @@
 
 #include "attiguard/core/name_table.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/default_gains.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/table_reader.hpp"
@@ -94,8 +95,22 @@ struct ConeGeometry {
 /// torque limit [PET-ERG eq. (2a)]), and the optional [erg] table (parse_erg_table). `control_extra` names
 /// the kind's own extra [control] keys (declared, read by the caller from the returned table).
 /// The inertia J is left to the caller.
+/// With Gains::derived_when_absent, k_p and k_d may be left out: they keep the values in `params`
+/// until the caller derives them (given_governor_values, docs/pet-erg.md section 8).
+enum class Gains { required, derived_when_absent };
 TableReader parse_governor_block(const TableReader& root, governor::GovernorParams& params,
-                                 std::initializer_list<std::string_view> control_extra = {});
+                                 std::initializer_list<std::string_view> control_extra = {},
+                                 Gains gains = Gains::required);
+
+/// Which of k_p, k_d ([control]) and κ, T_s, c_Γ ([erg]) the file gives, with the values read into
+/// `params` by parse_governor_block (docs/pet-erg.md, section 8); the others are derived.
+[[nodiscard]] governor::GivenGovernorValues given_governor_values(const TableReader& root,
+                                                                 const governor::GovernorParams& params);
+
+/// Copies the given or derived k_p, k_d, κ, T_s, c_Γ into `params` [PET-ERG eqs. (3)-(6)]
+/// (docs/pet-erg.md, section 8).
+void apply_governor_values(const governor::DerivedGovernorValues& values,
+                           governor::GovernorParams& params);
 
 /// Reads the optional `[erg]` table of `root` into `params` (κ of [PET-ERG eqs. (4), (6)], c_Γ and
 /// T_s of [PET-ERG eqs. (5)-(6)], ε of the navigation field, ε_Γ of the cap k_p(2 − ε_Γ)); keys left out keep

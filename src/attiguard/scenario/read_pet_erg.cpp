@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -16,6 +17,7 @@
 #include "attiguard/governor/pointing_threshold.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 #include "attiguard/scenario/messages.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
 #include "attiguard/scenario/robust_margin_setup.hpp"
 #include "attiguard/scenario/common_tables.hpp"
 #include "attiguard/scenario/ephemeris_check.hpp"
@@ -257,18 +259,105 @@ void parse_wheels(const TableReader& root, sim::PetErgScenario& sc) {
     }
     sc.wheels.push_back(w);
   }
+}
+
+/// The refusals of the wheel polytope (governor::wheel_polytope: the flight loop it needs, an
+/// array that does not span, a Γ_d that cannot be computed) located at the first [[wheels]]
+/// table; after the gains are known.
+void check_wheel_polytope(const TableReader& root, const sim::PetErgScenario& sc) {
+  if (sc.wheels.empty()) return;
   try {
     (void)governor::wheel_polytope(sim::design_inputs(sc));
   } catch (const SetupError& e) {
-    entries.front().fail_here(e.what());
+    root.array_of_tables("wheels").front().fail_here(e.what());
+  }
+}
+
+/// The derived values in the resolved scenario (docs/conventions.md, "Outputs"), replacing the
+/// constants [erg]'s reader recorded for its absent keys.
+void record_derived_values(const governor::DerivedGovernorValues& d) {
+  const std::pair<const char*, std::pair<bool, double>> values[] = {
+      {"control.kp", {d.kp_derived, d.kp}},         {"control.kd", {d.kd_derived, d.kd}},
+      {"erg.kappa", {d.kappa_derived, d.kappa}},    {"erg.sampling_period", {d.Ts_derived, d.Ts}},
+      {"erg.c_gamma", {d.c_gamma_derived, d.c_gamma}}, {"erg.epsilon", {d.epsilon_derived, d.epsilon}}};
+  for (const auto& [path, value] : values) {
+    if (value.first) DefaultsRecorder::replace_derived(path, value.second);
+  }
+}
+
+/// With robust margins: Γ_min/((1 − δ)Γ_d') of the design of `sc` (docs/pet-erg.md, section 8,
+/// "Robust margins"); +∞ when the design refuses the values, 0 without robust margins.
+double robust_margin_ratio(const sim::PetErgScenario& sc) {
+  try {
+    const governor::GovernorDesign design = sim::design_governor(sc);
+    if (!design.params.robust) return 0.0;
+    const governor::AttitudeGovernor gov(design.params, design.cones);
+    const governor::RobustMargin& m = *design.params.robust;
+    const double ratio = m.gamma_min / ((1.0 - m.delta) * gov.gamma_d());
+    return std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
+  } catch (const SetupError&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+/// The softenings of θ_ref tried for the robust margins, in order: softer first (a smaller k_p
+/// lowers the hold error k_d h ω̇), then stiffer (a larger k_d dominates the wheels' and the
+/// body's gyroscopic coupling in the strict Lyapunov function).
+constexpr std::array<double, 13> kSoftenings{1.0, 2.0, 4.0, 8.0, 16.0, 64.0, 256.0,
+                                             0.5, 0.25, 0.125, 1.0 / 16.0, 1.0 / 64.0, 1.0 / 256.0};
+
+/// k_p, k_d, κ, T_s, c_Γ, ε: the file's, or derived from the craft (docs/pet-erg.md, section 8).
+/// With robust margins and k_p derived, the first softening of θ_ref whose design leaves room
+/// (Γ_min ≤ robust_share·(1 − δ)Γ_d') is taken, else the one with the most room, else none (the
+/// design's refusal then names the bound at fault). A derivation that fails is located at
+/// control.tau_max.
+void derive_governor_values(const TableReader& root, const TableReader& control,
+                            sim::PetErgScenario& sc) {
+  const governor::GivenGovernorValues given = given_governor_values(root, sc.params);
+  governor::CraftScales craft = sim::craft_scales(sc);
+  const auto derive = [&](double softening) {
+    craft.softening = softening;
+    try {
+      sc.derived = governor::derive_governor_values(craft, given);
+    } catch (const SetupError& e) {
+      control.fail("tau_max", e.what());
+    }
+    apply_governor_values(sc.derived, sc.params);
+  };
+  derive(1.0);
+  if (sc.margins == governor::Margins::robust && !given.kp) {
+    double best = 1.0;
+    double best_ratio = robust_margin_ratio(sc);
+    for (const double softening : kSoftenings) {
+      if (best_ratio <= governor::DefaultGainConstants{}.robust_share) break;
+      if (softening == 1.0) continue;
+      derive(softening);
+      const double ratio = robust_margin_ratio(sc);
+      if (ratio < best_ratio) {
+        best = softening;
+        best_ratio = ratio;
+      }
+    }
+    if (!(best_ratio < 1.0)) best = 1.0;
+    derive(best);
+  }
+  apply_governor_values(sc.derived, sc.params);
+  record_derived_values(sc.derived);
+  const TableReader simulation = root.table("simulation");
+  if (!simulation.has("step")) {
+    sc.derived.integrator_step_derived = true;
+    sc.derived.integrator_step = std::min(sc.derived.integrator_step, 0.1 * sc.duration);
+    sc.integrator.step = sc.derived.integrator_step;
+    DefaultsRecorder::replace_derived("simulation.step", sc.integrator.step);
+    require_step_budget(simulation, sc.integrator, sc.duration);
   }
 }
 
 /// The governor block, `margins`, `control_period` of [control] (docs/scenario-format.md,
 /// "pet_erg"); returns the [control] reader.
 TableReader parse_control(const TableReader& root, sim::PetErgScenario& sc) {
-  const TableReader control =
-      parse_governor_block(root, sc.params, {"control_period", "margins", "robust_reference_step"});
+  const TableReader control = parse_governor_block(
+      root, sc.params, {"control_period", "margins", "robust_reference_step"}, Gains::derived_when_absent);
   sc.margins = enum_or(control, "margins", governor::kMarginsNames, governor::Margins::nominal);
   control.used_only_if("robust_reference_step", sc.margins == governor::Margins::robust,
                        "only with margins = \"robust\"");
@@ -308,8 +397,10 @@ void parse_simulation(const TableReader& root, sim::PetErgScenario& sc) {
   sc.convergence_tolerance =
       simulation.number_or("convergence_tolerance", 1e-4, NumberRule::positive());
   require_at_most_duration(simulation, "output_interval", sc.output_interval, sc.duration);
-  require_at_most_duration(simulation, "step", sc.integrator.step, sc.duration);
-  require_step_budget(simulation, sc.integrator, sc.duration);
+  if (simulation.has("step")) {  // else derived from the craft (derive_governor_values)
+    require_at_most_duration(simulation, "step", sc.integrator.step, sc.duration);
+    require_step_budget(simulation, sc.integrator, sc.duration);
+  }
   require_countable(simulation, "output_interval", sc.output_interval, sc.duration, kMaxOutputRows,
                     "output rows");
 }
@@ -392,7 +483,6 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   const TableReader body = root.table("body");
   declare(body, {"inertia"});
   sc.params.J = body.inertia("inertia");
-  check_torque_threshold(control, sc.params);
 
   sc.cones = parse_cones(root);
   const std::optional<TableReader> initial = parse_initial(root, sc);
@@ -407,6 +497,9 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   if (sc.margins == governor::Margins::robust) {
     sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
   }
+  derive_governor_values(root, control, sc);
+  check_torque_threshold(control, sc.params);
+  check_wheel_polytope(root, sc);
   const governor::GovernorDesign design = located_design(control, sc);
   check_step_counts(root, control, sc);
   root.finish();

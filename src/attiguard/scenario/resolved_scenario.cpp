@@ -45,6 +45,12 @@ void DefaultsRecorder::record(std::string path, DefaultValue value, bool derived
   t_recorder->defaults_.push_back({std::move(path), std::move(value), derived});
 }
 
+void DefaultsRecorder::replace_derived(std::string path, DefaultValue value) {
+  if (t_recorder == nullptr) return;
+  std::erase_if(t_recorder->defaults_, [&](const RecordedDefault& entry) { return entry.path == path; });
+  record(std::move(path), std::move(value), true);
+}
+
 void DefaultsRecorder::record_unused(std::string path) {
   if (t_recorder == nullptr) return;
   auto& defaults = t_recorder->defaults_;

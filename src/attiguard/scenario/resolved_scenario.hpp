@@ -58,6 +58,10 @@ class DefaultsRecorder {
 
   /// Called by the readers (no effect without a recorder on this thread).
   static void record(std::string path, DefaultValue value, bool derived = false);
+  /// Called by a reader that derives the default of `path` after a TableReader accessor recorded
+  /// a constant for it (the PET-ERG's values of docs/pet-erg.md, section 8): the earlier entry is
+  /// replaced by `value`, marked derived (no effect without a recorder).
+  static void replace_derived(std::string path, DefaultValue value);
   /// Called by TableReader::used_only_if for a key the other settings leave unused: its
   /// default, recorded before or after, is not one (no effect without a recorder).
   static void record_unused(std::string path);

@@ -14,7 +14,9 @@
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
+#include "attiguard/core/errors.hpp"
 #include "attiguard/sim/cone_json.hpp"
+#include "attiguard/sim/derived_values_json.hpp"
 #include "attiguard/sim/held_actuation.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
@@ -546,6 +548,11 @@ void add_governor_figures(nlohmann::json& j, const PetErgScenario& sc, const Pet
   j["gamma_g_initial"] = finite_or_null(r.gamma_g_initial);
   j["gamma_initial"] = r.gamma_initial;
   j["V_initial"] = r.V_initial;
+  try {
+    j["derived_defaults"] = derived_values_json(governor_values(sc));
+  } catch (const SetupError&) {  // a scenario built in code with no torque left over its disturbance
+    j["derived_defaults"] = nullptr;
+  }
 }
 
 /// The constraints [PET-ERG eqs. (2a), (2b)], the wheels' limits and the level V − Γ.

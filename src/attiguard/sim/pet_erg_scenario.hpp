@@ -12,6 +12,7 @@
 #include "attiguard/dynamics/disturbance_torque.hpp"
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/default_gains.hpp"
 #include "attiguard/governor/governor_design.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
@@ -45,6 +46,11 @@ struct PetErgScenario {
   /// them for the readers that predate governor::design (docs/architecture.md, "Where the
   /// configuration structs live"); nothing in sim/ reads them.
   governor::GovernorParams params;
+  /// Which values of params the reader derived from the craft because the file leaves them out,
+  /// with the scales they come from (docs/pet-erg.md, section 8); default-constructed (nothing
+  /// derived) for a scenario built in code. governor_values(sc) is what `check` prints and
+  /// summary.json records as `derived_defaults`.
+  governor::DerivedGovernorValues derived;
   std::vector<governor::ConeConstraint> cones;  ///< [[cones]] (at most governor::kMaxCones)
   lie::Mat3 R0_ib{lie::Mat3::Identity()};     ///< [initial] attitude
   lie::Vec3 omega0_b{lie::Vec3::Zero()};      ///< [initial] omega_b [rad/s]
@@ -68,6 +74,16 @@ struct PetErgScenario {
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
 };
+
+/// The craft's scales of `sc` the defaults derive from (docs/pet-erg.md, section 8): J, τ_max,
+/// the wheel polytope's inscribed torque radius, the disturbance bound, the largest slew (R_0
+/// through the schedule), the initial kinetic energy and the control period.
+[[nodiscard]] governor::CraftScales craft_scales(const PetErgScenario& sc);
+
+/// The values `sc` runs with and the craft's scales they relate to (docs/pet-erg.md, section 8):
+/// governor::derive_governor_values with every value of sc.params given; which of them the reader
+/// derived is taken from sc.derived. Throws SetupError as derive_governor_values.
+[[nodiscard]] governor::DerivedGovernorValues governor_values(const PetErgScenario& sc);
 
 /// The user's quantities of `sc` as the inputs of the governor's design (docs/pet-erg.md,
 /// sections 12-13): sc.params, cones, wheels, control_period, margins, robust_reference_step and

@@ -92,20 +92,25 @@ TEST(NavigationFieldTieBreak, SymmetricSaddleIsDetectedAndTheSideIsDeterministic
   EXPECT_EQ(tie_break_field(TieBreak{}, s.cones, R_g, s.R_d, rho_n), rho_n);
 }
 
-TEST(NavigationFieldTieBreak, SideFollowsAClearTangentialComponent) {
+TEST(NavigationFieldTieBreak, SideIsTheDescentSideOfPAndAClearTangentNeedsNoTieBreak) {
   const SymmetricSunSaddle s;
   const double psi = s.saddle_angle();
-  // Slightly off the symmetric plane: ρ_n has a component along −ĥ or +ĥ, the tie-break follows it.
+  const Mat3 R_g0 = tb_rot_z(psi);
+  const Vec3 h0 = tie_break_direction(s.cones[0], R_g0);
   for (const double side : {-1.0, 1.0}) {
-    const Mat3 R_g0 = tb_rot_z(psi);
-    const Vec3 h0 = tie_break_direction(s.cones[0], R_g0);
-    const Mat3 R_g = R_g0 * lie::exp(side * 0.02 * h0);
-    const Vec3 rho_n = navigation_field(s.cones, R_g, s.R_d);
-    const Vec3 h = tie_break_direction(s.cones[0], R_g);
-    ASSERT_GT(side * rho_n.dot(h), kTieBreakClearTangent * attractive_field(R_g, s.R_d).norm());
-    const TieBreakUpdate u = update_tie_break(TieBreak{}, s.cones, R_g, s.R_d, 1e-3);
+    // Slightly off the symmetric plane: P is lower on that side, the tie-break takes it.
+    const Mat3 near = R_g0 * lie::exp(side * 2e-4 * h0);
+    const Vec3 h = tie_break_direction(s.cones[0], near);
+    const double attraction = attractive_field(near, s.R_d).norm();
+    ASSERT_LE(std::abs(navigation_field(s.cones, near, s.R_d).dot(h)), kTieBreakClearTangent * attraction);
+    const TieBreakUpdate u = update_tie_break(TieBreak{}, s.cones, near, s.R_d, 1e-3);
     ASSERT_TRUE(u.started);
-    EXPECT_EQ(u.state.sign, side);
+    EXPECT_EQ(u.state.sign * h.dot(h0) > 0.0 ? 1.0 : -1.0, side);
+    // Farther off: the field's own tangential component takes R_g around, no tie-break.
+    const Mat3 off = R_g0 * lie::exp(side * 0.05 * h0);
+    ASSERT_GT(std::abs(navigation_field(s.cones, off, s.R_d).dot(tie_break_direction(s.cones[0], off))),
+              kTieBreakClearTangent * attractive_field(off, s.R_d).norm());
+    EXPECT_FALSE(update_tie_break(TieBreak{}, s.cones, off, s.R_d, 1e-3).started);
   }
 }
 

@@ -65,17 +65,13 @@ TieBreakUpdate update_tie_break(const TieBreak& held, std::span<const ConeConstr
   if (i < 0) return u;
   const Vec3 h = tie_break_direction(cones[static_cast<std::size_t>(i)], R_g);
   if (h.isZero()) return u;
-  const double tangent = rho_n.dot(h);
-  double sign = 1.0;
-  if (std::abs(tangent) > kTieBreakClearTangent * attraction) {
-    sign = tangent > 0.0 ? 1.0 : -1.0;
-  } else {
-    const double p_plus = navigation_potential(cones, R_g * lie::exp(kTieBreakProbe * h), R_d);
-    const double p_minus = navigation_potential(cones, R_g * lie::exp(-kTieBreakProbe * h), R_d);
-    // Equal to rounding (an exactly symmetric configuration): +1.
-    const double tie = 1e-12 * (1.0 + std::abs(p_plus) + std::abs(p_minus));
-    sign = p_minus < p_plus - tie ? -1.0 : 1.0;
-  }
+  // A clear tangential component takes R_g around the cone by itself (ξ is normalised): no stall.
+  if (std::abs(rho_n.dot(h)) > kTieBreakClearTangent * attraction) return u;
+  const double p_plus = navigation_potential(cones, R_g * lie::exp(kTieBreakProbe * h), R_d);
+  const double p_minus = navigation_potential(cones, R_g * lie::exp(-kTieBreakProbe * h), R_d);
+  // Equal to rounding (an exactly symmetric configuration): +1.
+  const double tie = 1e-12 * (1.0 + std::abs(p_plus) + std::abs(p_minus));
+  const double sign = p_minus < p_plus - tie ? -1.0 : 1.0;
   // Only a saddle is broken: at a minimum of P (e.g. between two overlapping bands) P rises on
   // both sides and the stall is real.
   const double p_here = navigation_potential(cones, R_g, R_d);

@@ -24,9 +24,10 @@ inline constexpr double kTieBreakBalance = 0.1;
 inline constexpr double kTieBreakRelease = 0.1;
 /// The detour's weight g: the field while active is ρ_n + σ g ‖ρ_a‖ ĥ.
 inline constexpr double kTieBreakDetourGain = 0.5;
-/// The side: a tangential component |ρ_nᵀĥ| above this fraction of ‖ρ_a‖ is followed …
-inline constexpr double kTieBreakClearTangent = 0.01;
-/// … otherwise P is compared at R_g exp(±kTieBreakProbe ĥ) [rad].
+/// Detection: a tangential component |ρ_nᵀĥ| above this fraction of ‖ρ_a‖ takes R_g around the
+/// cone by itself (ξ is normalised), no tie-break is needed.
+inline constexpr double kTieBreakClearTangent = 1e-3;
+/// The side: P is compared at R_g exp(±kTieBreakProbe ĥ) [rad].
 inline constexpr double kTieBreakProbe = 0.05;
 
 /// The tie-break state held on [t_k, t_{k+1}) (docs/pet-erg.md, section 4, "Saddles: the
@@ -55,9 +56,10 @@ struct TieBreakUpdate {
 /// "Saddles: the tie-break"). A held detour is released when its cone's band is no longer active
 /// (c_i ≥ ζ_i) or when ρ_nᵀ(σĥ) ≥ kTieBreakRelease ‖ρ_a‖. Otherwise, with none held, a detour
 /// starts when ‖ρ_a‖ > `floor` (R_g not at R_d), some band is active, ‖ρ_n‖ ≤ kTieBreakBalance
-/// ‖ρ_a‖, around the active cone with the largest ‖ρ_r,i‖, on the side of ρ_n's tangential
-/// component when it is clear, else on the side with the lower P at R_g exp(±kTieBreakProbe ĥ)
-/// (ties to 1e-12 relative: +1), and only if P is lower there than at R_g (a saddle, not a minimum of P).
+/// ‖ρ_a‖, around the active cone i with the largest ‖ρ_r,i‖, if ρ_n has no clear component along
+/// ĥ_i (|ρ_nᵀĥ_i| ≤ kTieBreakClearTangent ‖ρ_a‖), on the side with the lower P at
+/// R_g exp(±kTieBreakProbe ĥ_i) (ties to 1e-12 relative: +1), and only if P is lower there than at
+/// R_g (a saddle, not a minimum of P).
 [[nodiscard]] TieBreakUpdate update_tie_break(const TieBreak& held, std::span<const ConeConstraint> cones,
                                               const Mat3& R_g, const Mat3& R_d, double floor) noexcept;
 

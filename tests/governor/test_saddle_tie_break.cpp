@@ -114,6 +114,27 @@ TEST(NavigationFieldTieBreak, SideIsTheDescentSideOfPAndAClearTangentNeedsNoTieB
   }
 }
 
+TEST(NavigationFieldTieBreak, SideAvoidsAnotherConesBandMetAroundTheCone) {
+  // The symmetric saddle with a second keep-out cone 50° above the Sun (its band overlaps the
+  // Sun's above it): the look-ahead a quarter turn around the Sun's cone picks the side below.
+  for (const double elevation : {50.0, -50.0}) {
+    SymmetricSunSaddle s;
+    const double psi = s.saddle_angle();
+    const double e = elevation * kTbDeg;
+    const std::array<ConeConstraint, 2> cones{
+        s.cones[0], keep_out_cone(Vec3::UnitX(), tb_rot_z(60.0 * kTbDeg) * Vec3(std::cos(e), 0.0, std::sin(e)),
+                                  15.0 * kTbDeg)};
+    const Mat3 R_g = tb_rot_z(psi);
+    ASSERT_LE(navigation_field(cones, R_g, s.R_d).norm(), 1e-9);  // the second band is far from the saddle
+    const TieBreakUpdate u = update_tie_break(TieBreak{}, cones, R_g, s.R_d, 1e-3);
+    ASSERT_TRUE(u.started);
+    EXPECT_EQ(u.state.cone, 0);
+    // The body axis moves away from the second cone: down when it is above, up when below.
+    const Mat3 moved = R_g * lie::exp(u.state.sign * 0.05 * tie_break_direction(cones[0], R_g));
+    EXPECT_LT((moved * Vec3::UnitX()).z() * elevation, 0.0) << elevation;
+  }
+}
+
 TEST(NavigationFieldTieBreak, NoDetectionWithoutAnActiveBandABalancedFieldOrDistanceToRd) {
   const SymmetricSunSaddle s;
   // Band inactive (ψ = 10°: the tracker 50° from the Sun): ρ_n = ρ_a.

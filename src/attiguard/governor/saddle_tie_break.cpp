@@ -1,6 +1,8 @@
 #include "attiguard/governor/saddle_tie_break.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "attiguard/governor/navigation_field.hpp"
 
@@ -27,6 +29,25 @@ int strongest_active_cone(std::span<const ConeConstraint> cones, const Mat3& R_g
     }
   }
   return best;
+}
+
+/// The look-ahead of one side σ: the largest Σ_{j≠i} P_r,j met while the body axis is carried a
+/// quarter turn around cone i at constant c_i, R = exp(θ â_c,i) R_g, θ = σ k π/(2 K), k = 1..K
+/// (θ > 0 is the side of +ĥ_i: the body rate of exp(θ â_c) R_g is R_gᵀa_c, whose component
+/// across a_b is along ĥ_i). 0 when no other band is met.
+double side_barrier(std::span<const ConeConstraint> cones, std::size_t i, const Mat3& R_g, double sign) noexcept {
+  constexpr int kSteps = 18;
+  double barrier = 0.0;
+  for (int k = 1; k <= kSteps; ++k) {
+    const double theta = sign * (std::numbers::pi / 2.0) * static_cast<double>(k) / kSteps;
+    const Mat3 R = lie::exp(theta * cones[i].direction_i) * R_g;
+    double p = 0.0;
+    for (std::size_t j = 0; j < cones.size(); ++j) {
+      if (j != i) p += repulsive_potential(cones[j], R);
+    }
+    barrier = std::max(barrier, p);
+  }
+  return barrier;
 }
 
 }  // namespace
@@ -67,11 +88,19 @@ TieBreakUpdate update_tie_break(const TieBreak& held, std::span<const ConeConstr
   if (h.isZero()) return u;
   // A clear tangential component takes R_g around the cone by itself (ξ is normalised): no stall.
   if (std::abs(rho_n.dot(h)) > kTieBreakClearTangent * attraction) return u;
-  const double p_plus = navigation_potential(cones, R_g * lie::exp(kTieBreakProbe * h), R_d);
-  const double p_minus = navigation_potential(cones, R_g * lie::exp(-kTieBreakProbe * h), R_d);
-  // Equal to rounding (an exactly symmetric configuration): +1.
-  const double tie = 1e-12 * (1.0 + std::abs(p_plus) + std::abs(p_minus));
-  const double sign = p_minus < p_plus - tie ? -1.0 : 1.0;
+  // The side: away from the other cones' bands met a quarter turn around cone i, if they differ;
+  // else the lower P at R_g exp(±η ĥ); equal to rounding (exact symmetry): +1.
+  const auto lower = [](double minus, double plus) {
+    const double tie = 1e-12 * (1.0 + std::abs(plus) + std::abs(minus));
+    return minus < plus - tie ? -1.0 : (plus < minus - tie ? 1.0 : 0.0);
+  };
+  const std::size_t ci = static_cast<std::size_t>(i);
+  double sign = lower(side_barrier(cones, ci, R_g, -1.0), side_barrier(cones, ci, R_g, 1.0));
+  if (sign == 0.0) {
+    sign = lower(navigation_potential(cones, R_g * lie::exp(-kTieBreakProbe * h), R_d),
+                 navigation_potential(cones, R_g * lie::exp(kTieBreakProbe * h), R_d));
+  }
+  if (sign == 0.0) sign = 1.0;
   // Only a saddle is broken: at a minimum of P (e.g. between two overlapping bands) P rises on
   // both sides and the stall is real.
   const double p_here = navigation_potential(cones, R_g, R_d);

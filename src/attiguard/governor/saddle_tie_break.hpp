@@ -57,9 +57,10 @@ struct TieBreakUpdate {
 /// (c_i ≥ ζ_i) or when ρ_nᵀ(σĥ) ≥ kTieBreakRelease ‖ρ_a‖. Otherwise, with none held, a detour
 /// starts when ‖ρ_a‖ > `floor` (R_g not at R_d), some band is active, ‖ρ_n‖ ≤ kTieBreakBalance
 /// ‖ρ_a‖, around the active cone i with the largest ‖ρ_r,i‖, if ρ_n has no clear component along
-/// ĥ_i (|ρ_nᵀĥ_i| ≤ kTieBreakClearTangent ‖ρ_a‖), on the side with the lower P at
-/// R_g exp(±kTieBreakProbe ĥ_i) (ties to 1e-12 relative: +1), and only if P is lower there than at
-/// R_g (a saddle, not a minimum of P).
+/// ĥ_i (|ρ_nᵀĥ_i| ≤ kTieBreakClearTangent ‖ρ_a‖), on the side whose look-ahead (the body axis
+/// carried a quarter turn around cone i at constant c_i) meets the lower largest Σ_{j≠i} P_r,j,
+/// if the two differ, else on the side with the lower P at R_g exp(±kTieBreakProbe ĥ_i) (ties to
+/// 1e-12 relative: +1), and only if P is lower there than at R_g (a saddle, not a minimum of P).
 [[nodiscard]] TieBreakUpdate update_tie_break(const TieBreak& held, std::span<const ConeConstraint> cones,
                                               const Mat3& R_g, const Mat3& R_d, double floor) noexcept;
 

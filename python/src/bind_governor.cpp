@@ -392,6 +392,14 @@ void bind_pd_body_output(py::module_& m) {
       .def_readonly("gamma", &GovernorOutput::gamma)
       .def_readonly("trigger", &GovernorOutput::trigger)
       .def_readonly("sampled", &GovernorOutput::sampled)
+      .def_property_readonly(
+          "tie_break", [](const GovernorOutput& o) { return o.tie_break.active; },
+          "A saddle tie-break of the navigation field is held (docs/pet-erg.md, section 4).")
+      .def_property_readonly(
+          "tie_break_cone", [](const GovernorOutput& o) { return o.tie_break.active ? o.tie_break.cone : -1; },
+          "The cone the held tie-break goes around, -1 if none (docs/pet-erg.md, section 4).")
+      .def_readonly("tie_break_started", &GovernorOutput::tie_break_started,
+                    "step() started a saddle tie-break at this call (docs/pet-erg.md, section 4).")
       .def_property_readonly("margins", &margins_of)
       .def_property_readonly("min_margin", &GovernorOutput::min_margin);
 }

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -188,6 +189,40 @@ TEST(AllocationFree, AttitudeGovernorStepOnThePetErgPaperScenario) {
       EXPECT_GE(samples, 90);  // 50 s at T_s = 0.5 s: the trigger (5) was evaluated
     }
   }
+}
+
+TEST(AllocationFree, AttitudeGovernorStepThroughASaddleTieBreak) {
+  // examples/pet_erg_symmetric_sun.toml at 10 Hz with the bounded step (docs/pet-erg.md, section
+  // 4, "Saddles: the tie-break"): the Sun exactly on the slew path, the tie-break starts, holds the
+  // detour and is released inside the counted calls.
+  governor::GovernorParams params;
+  params.bounded_step = true;
+  params.J = Vec3(1.0, 2.0, 3.0).asDiagonal();
+  params.tau_max = 2.5;
+  const double sixty = std::numbers::pi / 3.0;
+  const std::array cones{governor::keep_out_cone(Vec3::UnitX(), Vec3(std::cos(sixty), std::sin(sixty), 0.0),
+                                                 20.0 * std::numbers::pi / 180.0)};
+  governor::AttitudeGovernor gov(params, cones);
+  const dynamics::RigidBody body(params.J);
+  const Mat3 R_d = lie::exp(2.0 * sixty * Vec3::UnitZ());
+  Mat3 R_ib = Mat3::Identity();
+  Vec3 omega_b = Vec3::Zero();
+  const double dt = 0.01;
+  g_allocations = 0;
+  int started = 0;
+  int held = 0;
+  for (int k = 0; k < kCalls; ++k) {
+    const governor::GovernorOutput out = counted([&] { return gov.step(k * dt, R_ib, omega_b, R_d); });
+    started += out.tie_break_started ? 1 : 0;
+    held += out.tie_break.active ? 1 : 0;
+    propagate_attitude(body, out.tau_b, dt, R_ib, omega_b);
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
+                                     << " calls of AttitudeGovernor::step through a saddle tie-break";
+  EXPECT_EQ(started, 1);
+  EXPECT_GT(held, 0);
+  EXPECT_FALSE(gov.tie_break().active);       // released
+  EXPECT_LT(lie::distance(R_ib, R_d), 1e-2);  // around the Sun to R_d
 }
 
 // The pet_erg flight loop's on-board pieces besides the governor (docs/pet-erg.md, sections

@@ -112,11 +112,26 @@ void waypoint_parts(Line& line, const json& summary, std::optional<double> worst
   line.part("worst arrival error", worst_arrival, "m");
 }
 
+/// "saddle tie-break around cone I at t = T s" (or "N saddle tie-breaks, the first around …")
+/// when summary.json counts any (docs/pet-erg.md, section 4, "Saddles: the tie-break").
+std::string tie_break_detail(const json& summary) {
+  const long n = count(summary, "saddle_tie_breaks");
+  if (n <= 0) return {};
+  std::string d = n == 1 ? "saddle tie-break" : std::to_string(n) + " saddle tie-breaks, the first";
+  const auto it = summary.find("tie_break_cones");
+  if (it != summary.end() && it->is_array() && !it->empty() && it->front().is_number_integer()) {
+    d += " around cone " + std::to_string(it->front().get<long>());
+  }
+  if (const auto t = number(summary, "first_tie_break_time")) d += " at t = " + fig(*t) + " s";
+  return d;
+}
+
 }  // namespace
 
 std::string pet_erg_outcome_line(const json& summary) {
   const std::string word = text(summary, "outcome", "unknown");
   Line line(word);
+  line.detail(tie_break_detail(summary));
   const auto t_conv = number(summary, "convergence_time");
   const auto ratio = number(summary, "convergence_time_over_bang_bang");
   const auto t_bb = number(summary, "eigenaxis_bang_bang_time");

@@ -12,6 +12,7 @@
 
 #include "attiguard/governor/navigation_field.hpp"
 #include "attiguard/governor/pointing_threshold.hpp"
+#include "attiguard/governor/saddle_tie_break.hpp"
 
 namespace attiguard::governor {
 
@@ -127,7 +128,7 @@ bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
 }
 
 GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
-                                          const Mat3& R_d, bool flag) const noexcept {
+                                          const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
   GovernorOutput out;
   out.R_g = params_.mode == GovernorMode::none ? R_d : R_g;
   out.tau_b = torque(R_ib, omega_b, out.R_g);
@@ -140,11 +141,13 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   out.trigger = flag;
   switch (params_.mode) {
     case GovernorMode::pet:
-      out.rho = navigation_field(out.R_g, R_d);
+      out.tie_break = tie;
+      out.rho = governor::tie_break_field(tie, cones_.span(), out.R_g, R_d, navigation_field(out.R_g, R_d));
       out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       break;
     case GovernorMode::continuous:
-      out.rho = navigation_field(out.R_g, R_d);
+      out.tie_break = tie;
+      out.rho = governor::tie_break_field(tie, cones_.span(), out.R_g, R_d, navigation_field(out.R_g, R_d));
       out.xi_g = erg_reference_rate(params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       out.trigger = true;
       break;
@@ -159,6 +162,12 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   return out;
 }
 
+TieBreakUpdate AttitudeGovernor::tie_break_update(const TieBreak& held, const Mat3& R_g,
+                                                  const Mat3& R_d) const noexcept {
+  if (params_.mode == GovernorMode::none || !params_.saddle_tie_break) return TieBreakUpdate{};
+  return update_tie_break(held, cones_.span(), R_g, R_d, params_.epsilon);
+}
+
 void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
   started_ = true;
   t_prev_ = t0;
@@ -166,6 +175,7 @@ void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {
   last_move_.setZero();
   move_scale_ = 1.0;
   flag_ = params_.mode == GovernorMode::continuous;
+  tie_ = TieBreak{};
   clock_ = SamplingClock(t0, params_.Ts);
   out_ = GovernorOutput{};
   out_.R_g = R_g0;
@@ -222,12 +232,21 @@ const GovernorOutput& AttitudeGovernor::step(double t, const Mat3& R_ib, const V
   }
   t_prev_ = std::max(t_prev_, t);
   bool sampled = false;
-  if (params_.mode == GovernorMode::pet && clock_.poll(t)) {
-    flag_ = trigger_condition(R_ib, omega_b, R_g_);
-    sampled = true;
+  bool tie_break_started = false;
+  if (params_.mode != GovernorMode::none && clock_.poll(t)) {
+    if (params_.mode == GovernorMode::pet) {
+      flag_ = trigger_condition(R_ib, omega_b, R_g_);
+      sampled = true;
+    }
+    // The saddle tie-break, at the same instants as (5) and held like its flag (docs/pet-erg.md,
+    // section 4, "Saddles: the tie-break"; in mode continuous at the instants k T_s too).
+    const TieBreakUpdate u = tie_break_update(tie_, R_g_, R_d);
+    tie_ = u.state;
+    tie_break_started = u.started;
   }
-  out_ = evaluate(R_ib, omega_b, R_g_, R_d, flag_);
+  out_ = evaluate(R_ib, omega_b, R_g_, R_d, flag_, tie_);
   out_.sampled = sampled;
+  out_.tie_break_started = tie_break_started;
   return out_;
 }
 

@@ -22,6 +22,7 @@
 #include "attiguard/governor/cone_constraint.hpp"
 #include "attiguard/governor/pet_erg.hpp"
 #include "attiguard/governor/robust_margin.hpp"
+#include "attiguard/governor/saddle_tie_break.hpp"
 #include "attiguard/governor/torque_threshold.hpp"
 
 namespace attiguard::governor {
@@ -54,6 +55,9 @@ struct GovernorParams {
   /// until V ≤ Γ holds at its end instead of being dropped (docs/pet-erg.md, "Discrete reference
   /// update"). false keeps the plain zero-order hold with rejection.
   bool bounded_step{false};
+  /// The saddle tie-break of the navigation field (docs/pet-erg.md, section 4, "Saddles: the
+  /// tie-break"); false turns it off (tests compare with the field without it).
+  bool saddle_tie_break{true};
   /// A second torque constraint, a polytope {|r_iᵀτ| ≤ u_i} (e.g. a reaction-wheel array,
   /// docs/pet-erg.md, section 12): when set, Γ_d is min{Γ_d(‖τ‖ ≤ τ_max), Γ_d(polytope)}, its
   /// value computed offline by compute_polytope_torque_threshold. 0: no polytope.
@@ -72,7 +76,9 @@ struct GovernorOutput {
   Vec3 tau_b{Vec3::Zero()};        ///< PD torque [PET-ERG eq. (3)] towards R_g [N·m]
   Mat3 R_g{Mat3::Identity()};      ///< auxiliary reference (R_d itself in mode none)
   Vec3 xi_g{Vec3::Zero()};         ///< body rate of R_g, Ṙ_g = R_g ξ̂ ([PET-ERG eq. (4)] or (6)) [rad/s]
-  Vec3 rho{Vec3::Zero()};          ///< navigation field ρ_n(R_d, R_g) (Sec. III-B.2)
+  /// navigation field ρ_n(R_d, R_g) (Sec. III-B.2), with an active saddle tie-break the field
+  /// with the detour, ρ_n + σ g ‖ρ_a‖ ĥ (docs/pet-erg.md, section 4, "Saddles: the tie-break")
+  Vec3 rho{Vec3::Zero()};
   double V{0.0};                   ///< Lyapunov function V(R, ω, R_g) (Sec. III-A)
   /// The level compared with Γ: V, or W = V − ε ωᵀJ s with robust margins (docs/pet-erg.md,
   /// section 13; without the measurement margin)
@@ -82,6 +88,9 @@ struct GovernorOutput {
   double gamma{0.0};               ///< Γ(R_g) = min{Γ_d, Γ_g, k_p(2 − ε_Γ)} (× (1 − δ) robust)
   bool trigger{true};              ///< flag of [PET-ERG eq. (5)] held on the current sampling interval
   bool sampled{false};             ///< true when this call evaluated (5) (a sampling instant)
+  /// The saddle tie-break held on the current sampling interval (docs/pet-erg.md, section 4)
+  TieBreak tie_break{};
+  bool tie_break_started{false};   ///< step() only: a tie-break started at this call
   int cone_count{0};
   std::array<double, kMaxCones> margins{};  ///< a_cᵀ R a_b − cos θ_c of each cone, [PET-ERG eq. (2b)]
   /// Smallest margin of [PET-ERG eq. (2b)] over the cones [PET-ERG eq. (2b)]; +∞ without cones.
@@ -118,8 +127,15 @@ class AttitudeGovernor {
   /// The full evaluation at one instant with the held trigger flag `flag`: τ (3), V, Γ's, ρ_n,
   /// the reference rate ξ of [PET-ERG eq. (6)] in mode pet (of [PET-ERG eq. (4)] in mode continuous; 0 in mode none, where
   /// R_g is replaced by R_d) and the margins of [PET-ERG eq. (2b)] [PET-ERG eqs. (3)-(6)].
+  /// `tie`: the saddle tie-break held on the sampling interval; when active, ξ follows the field
+  /// with the detour (docs/pet-erg.md, section 4, "Saddles: the tie-break").
   [[nodiscard]] GovernorOutput evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
-                                        const Mat3& R_d, bool flag) const noexcept;
+                                        const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
+  /// The saddle tie-break at a sampling instant for R_g and R_d (update_tie_break with the floor
+  /// ε on ‖ρ_a‖; docs/pet-erg.md, section 4, "Saddles: the tie-break"); the state of the flight
+  /// loop is not changed.
+  [[nodiscard]] TieBreakUpdate tie_break_update(const TieBreak& held, const Mat3& R_g,
+                                                const Mat3& R_d) const noexcept;
 
   // ---- the stateful flight loop ----
 
@@ -129,8 +145,9 @@ class AttitudeGovernor {
   /// One control step at time t (non-decreasing across calls) with the measured R, ω and the
   /// current R_d(t) (PET-ERG paper, Fig. 1): moves R_g over [t_prev, t] with the rate of the
   /// previous call (zero-order hold, R_g ← R_g exp((t − t_prev) ξ̂), a move that would leave
-  /// V > Γ is not taken), evaluates (5) when a sampling instant t_k has been reached, and
-  /// returns τ (3) with all diagnostics. Calls reset(t, R_ib) first if reset was never called.
+  /// V > Γ is not taken), evaluates (5) and the saddle tie-break (docs/pet-erg.md, section 4)
+  /// when a sampling instant t_k has been reached (in modes pet and continuous), and returns
+  /// τ (3) with all diagnostics. Calls reset(t, R_ib) first if reset was never called.
   /// With params.bounded_step the move is bounded and shortened instead (docs/pet-erg.md,
   /// "Discrete reference update").
   const GovernorOutput& step(double t, const Mat3& R_ib, const Vec3& omega_b,
@@ -140,6 +157,8 @@ class AttitudeGovernor {
   [[nodiscard]] const Mat3& reference() const noexcept { return R_g_; }
   /// The trigger flag of [PET-ERG eq. (5)] held on the current sampling interval [PET-ERG eq. (6)].
   [[nodiscard]] bool trigger_flag() const noexcept { return flag_; }
+  /// The saddle tie-break held on the current sampling interval (docs/pet-erg.md, section 4).
+  [[nodiscard]] const TieBreak& tie_break() const noexcept { return tie_; }
   /// The output of the last step [PET-ERG eqs. (3)-(6)].
   [[nodiscard]] const GovernorOutput& last() const noexcept { return out_; }
 
@@ -183,6 +202,7 @@ class AttitudeGovernor {
   Vec3 last_move_{Vec3::Zero()};  ///< the last move of R_g (bounded_step), body frame of R_g
   double move_scale_{1.0};        ///< reversal scale of the bounded step
   bool flag_{true};
+  TieBreak tie_;
   SamplingClock clock_;
   GovernorOutput out_;
 };

@@ -207,13 +207,15 @@ std::vector<governor::ConeConstraint> parse_cones(const TableReader& root) {
 
 void parse_erg_table(const TableReader& root, governor::GovernorParams& params) {
   const TableReader erg = root.table_or_empty("erg");  // left out: its defaults, read the same way
-  declare(erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma"});
+  declare(erg, {"kappa", "c_gamma", "sampling_period", "epsilon", "epsilon_gamma", "saddle_tie_break"});
   params.kappa = erg.number_or("kappa", params.kappa, NumberRule::positive());
   params.c_gamma = erg.number_or("c_gamma", params.c_gamma, NumberRule{1.0, std::nullopt, true, false});
   params.Ts = erg.number_or("sampling_period", params.Ts, NumberRule::positive());
   params.epsilon = erg.number_or("epsilon", params.epsilon, NumberRule::positive());
   params.epsilon_gamma =
       erg.number_or("epsilon_gamma", params.epsilon_gamma, NumberRule{0.0, 2.0, true, true});
+  // The saddle tie-break of the navigation field (docs/pet-erg.md, section 4).
+  params.saddle_tie_break = erg.boolean_or("saddle_tie_break", params.saddle_tie_break);
   erg.finish();
 }
 

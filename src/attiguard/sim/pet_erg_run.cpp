@@ -53,7 +53,8 @@ std::vector<Stop> stop_plan(const PetErgScenario& sc) {
       }
       stops.push_back({t, false, false, true});
     }
-  } else if (sc.params.mode == GovernorMode::pet) {
+  } else if (sc.params.mode != GovernorMode::none) {
+    // (5) in mode pet; the saddle tie-break in modes pet and continuous (docs/pet-erg.md, section 4).
     for (long k = 1;; ++k) {
       const double t = static_cast<double>(k) * sc.params.Ts;
       if (t >= sc.duration - 1e-9 * sc.params.Ts) {
@@ -135,6 +136,14 @@ PetErgResult initial_result(const PetErgScenario& sc, governor::GovernorDesign d
   r.max_V_minus_Gamma = -std::numeric_limits<double>::infinity();
   r.reference_motion = ReferenceMotion(0.5 * sc.duration);
   return r;
+}
+
+/// A saddle tie-break started at t around cone `cone` (docs/pet-erg.md, section 4).
+void note_tie_break(PetErgResult& r, double t, int cone) {
+  if (r.saddle_tie_breaks++ == 0) r.first_tie_break_time = t;
+  if (std::find(r.tie_break_cones.begin(), r.tie_break_cones.end(), cone) == r.tie_break_cones.end()) {
+    r.tie_break_cones.push_back(cone);
+  }
 }
 
 /// Folds one instant into the figures: `out` is the governor's view with the torque applied.
@@ -228,9 +237,11 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   PetErgResult r = initial_result(sc, std::move(design), gov);
   PetErgState y = pet_erg_initial_state(sc);
   bool flag = sc.params.mode == GovernorMode::continuous;
+  // The saddle tie-break, sampled with the flag and held with it (docs/pet-erg.md, section 4).
+  governor::TieBreak tie;
 
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
-    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag);
+    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag, tie);
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3) = out.xi_g;
@@ -239,23 +250,26 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   };
   auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
     const Mat3 R_d = sc.desired.at(t);
-    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag);
+    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag, tie);
     record(sc, r, t, R_d, s.R[0], out);
     return out;
   };
-  auto sample = [&](const PetErgState& s) {
+  auto sample = [&](double t, const PetErgState& s) {
     if (sc.params.mode == GovernorMode::pet) {
       flag = gov.trigger_condition(s.R[0], s.x, s.R[1]);
       ++r.samples;
       r.samples_updating += flag ? 1 : 0;
     }
+    const governor::TieBreakUpdate u = gov.tie_break_update(tie, s.R[1], sc.desired.at(t));
+    tie = u.state;
+    if (u.started) note_tie_break(r, t, tie.cone);
   };
 
   // t = 0 is the first sampling instant t_0.
-  sample(y);
-  auto at_stop = [&](const Stop& stop, double, PetErgState& s) {
+  sample(0.0, y);
+  auto at_stop = [&](const Stop& stop, double t, PetErgState& s) {
     if (stop.sample) {
-      sample(s);
+      sample(t, s);
     }
   };
   const integrate::IntegrationStats stats = integrate_over_stops(sc, field, y, monitor, at_stop, on_output);
@@ -365,7 +379,8 @@ class PetErgFlightLoop {
   /// The governor's view of the true state with the torque actually applied, the margins of the
   /// true constraints (with robust margins the governor enforces tightened cones).
   GovernorOutput view(const PetErgState& s, const Mat3& R_d) const {
-    GovernorOutput out = gov_.evaluate(s.R[0] * bias_frame_, s.x, s.R[1], R_d, gov_.trigger_flag());
+    GovernorOutput out =
+        gov_.evaluate(s.R[0] * bias_frame_, s.x, s.R[1], R_d, gov_.trigger_flag(), gov_.tie_break());
     out.tau_b = actuation_.torque_b();
     for (std::size_t i = 0; i < sc_.cones.size(); ++i) {
       out.margins[i] = governor::pointing_margin(sc_.cones[i], s.R[0]);
@@ -392,6 +407,7 @@ class PetErgFlightLoop {
       ++r_.samples;
       r_.samples_updating += out.trigger ? 1 : 0;
     }
+    if (out.tie_break_started) note_tie_break(r_, t, out.tie_break.cone);
   }
 
   const PetErgScenario& sc_;
@@ -595,6 +611,11 @@ void add_outcome(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult
   j["reference_reversals_last_half"] = r.reference_motion.reversals();
   j["reference_path_last_half"] = r.reference_motion.path_length();
   j["active_cones"] = r.active_cones;
+  // The saddle tie-breaks of the navigation field (docs/pet-erg.md, section 4).
+  j["saddle_tie_breaks"] = r.saddle_tie_breaks;
+  j["first_tie_break_time"] =
+      r.first_tie_break_time >= 0.0 ? nlohmann::json(r.first_tie_break_time) : nlohmann::json(nullptr);
+  j["tie_break_cones"] = r.tie_break_cones;
   j["slew_angle_deg"] = r.slew_angle * 180.0 / std::numbers::pi;
   j["eigenaxis_bang_bang_time"] = r.eigenaxis_bang_bang_time;
   j["convergence_time_over_bang_bang"] =

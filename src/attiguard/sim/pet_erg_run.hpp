@@ -61,6 +61,11 @@ struct PetErgResult {
   /// … and max over the steps of |h_i| / h_max,i; the momenta at the end [N·m·s].
   double max_wheel_momentum_ratio{0.0};
   std::vector<double> final_wheel_momentum;
+  /// Saddle tie-breaks started (docs/pet-erg.md, section 4, "Saddles: the tie-break"), the time
+  /// of the first (−1 if none) and the cones they went around (distinct, in the order met).
+  long saddle_tie_breaks{0};
+  double first_tie_break_time{-1.0};
+  std::vector<int> tie_break_cones;
   long samples{0};           ///< sampling instants at which (5) was evaluated (mode pet)
   long samples_updating{0};  ///< of which the condition held
   long steps{0};

@@ -8,6 +8,7 @@
 //
 // The whole measurement (docs/pet-erg.md, section 8, "Measured"):
 //   ATTIGUARD_ANY_CRAFT_RUNS=1000 build/tests/attiguard_tests --gtest_filter='PetErgAnyCraft.Random*'
+// One craft of it: ATTIGUARD_ANY_CRAFT_FIRST=I ATTIGUARD_ANY_CRAFT_RUNS=1 ATTIGUARD_ANY_CRAFT_VERBOSE=1 …
 
 #include <gtest/gtest.h>
 
@@ -182,7 +183,9 @@ TEST(PetErgAnyCraft, RandomCraftsConvergeWithDefaults) {
   long runs = 0, converged = 0, violations = 0, refused = 0, tie_broken = 0;
   std::vector<double> ratios;
   std::map<std::string, long> not_converged;
-  for (int index = 0; runs < wanted && index < 50 * wanted; ++index) {
+  // ATTIGUARD_ANY_CRAFT_FIRST=I starts at draw I (to replay one craft of the measurement)
+  const int first = std::getenv("ATTIGUARD_ANY_CRAFT_FIRST") ? std::atoi(std::getenv("ATTIGUARD_ANY_CRAFT_FIRST")) : 0;
+  for (int index = first; runs < wanted && index < first + 50 * wanted; ++index) {
     Random r(41000 + static_cast<std::uint64_t>(index));
     const Loop loop = static_cast<Loop>(index % 4);
     const std::string text = random_craft(r, loop, index);

@@ -120,6 +120,9 @@ DerivedGovernorValues derive_governor_values(const CraftScales& craft,
   const double omega_fast = std::max({std::sqrt(d.kp / J_min), d.kd / J_min,
                                      d.kappa * d.gamma_d_estimate / d.epsilon});
   d.integrator_step = std::min(0.5 * d.Ts, kStepsPerRate / omega_fast);
+  if (craft.narrowest_band > 0.0) {
+    d.integrator_step = std::min(d.integrator_step, kStepsPerRate * craft.narrowest_band / (d.kappa * d.gamma_d_estimate));
+  }
   if (craft.control_period > 0.0) d.integrator_step = std::min(d.integrator_step, craft.control_period);
   require_default(positive_finite(d.kp) && positive_finite(d.kd) && positive_finite(d.kappa) &&
               positive_finite(d.Ts) && positive_finite(d.epsilon) &&

@@ -25,6 +25,9 @@ struct CraftScales {
   double slew_angle{0.0};         ///< the largest slew of the scenario [rad]
   double initial_kinetic_energy{0.0};  ///< ½ω₀ᵀJω₀ of the initial state [J]
   double control_period{0.0};     ///< flight-loop period h [s]; 0: the continuous-time loop
+  /// The narrowest repulsive band of the cones as an angle, min_i (ζ_i − δ_i)/sin θ_c,i [rad]
+  /// (0 without cones): the reference must not cross it in one integration step.
+  double narrowest_band{0.0};
   /// θ_ref is multiplied by it (> 1: a softer loop, k_p ∝ 1/softening; < 1: stiffer). The reader
   /// chooses it so that the robust margins leave room (docs/pet-erg.md, section 8, "Robust
   /// margins").
@@ -74,8 +77,9 @@ struct DerivedGovernorValues {
   double damping_period{0.0};
   bool limited_by_control_period{false};  ///< the flight-loop caps lowered k_p
   /// The integration step a simulation takes when the scenario gives none [s]:
-  /// min(T_s/2, 0.1/ω_fast, h), ω_fast = max(√(k_p/J_min), k_d/J_min, κΓ_d/ε) (the fastest rate
-  /// of the closed loop: the PD poles and the reference's approach to R_d).
+  /// min(T_s/2, 0.1/ω_fast, 0.1 w/(κΓ_d), h), ω_fast = max(√(k_p/J_min), k_d/J_min, κΓ_d/ε) (the
+  /// fastest rate of the closed loop: the PD poles and the reference's approach to R_d), w the
+  /// narrowest repulsive band (the reference, at most κΓ_d fast, crosses a tenth of it per step).
   double integrator_step{0.0};
   bool integrator_step_derived{false};  ///< set by the reader when [simulation] step is absent
   [[nodiscard]] bool any_derived() const noexcept {

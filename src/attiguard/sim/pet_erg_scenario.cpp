@@ -74,6 +74,11 @@ governor::CraftScales craft_scales(const PetErgScenario& sc) {
   craft.slew_angle = largest_slew(sc);
   craft.initial_kinetic_energy = 0.5 * sc.omega0_b.dot(sc.params.J * sc.omega0_b);
   craft.control_period = sc.control_period;
+  for (const governor::ConeConstraint& cone : sc.cones) {
+    const double sine = std::sqrt(std::max(0.0, 1.0 - cone.cos_theta_c * cone.cos_theta_c));
+    const double band = (cone.zeta - cone.delta) / std::max(sine, 1e-3);
+    if (band > 0.0 && (craft.narrowest_band == 0.0 || band < craft.narrowest_band)) craft.narrowest_band = band;
+  }
   return craft;
 }
 

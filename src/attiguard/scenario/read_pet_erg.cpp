@@ -501,7 +501,11 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
         parse_imperfections(*im, sc.control_period, sc.duration, sc.params.J, sc.params.tau_max);
   }
   parse_wheels(root, sc);
-  if (sc.margins == governor::Margins::robust) {
+  // The reference step cap bounds the lag of a delayed command only (docs/pet-erg.md, section 13).
+  control.used_only_if("robust_reference_step", sc.imperfections.delay_periods > 0,
+                       "only used with [imperfections] delay_periods = 1 (it caps the reference "
+                       "lag of a delayed command; without the delay there is none)");
+  if (sc.margins == governor::Margins::robust && sc.imperfections.delay_periods > 0) {
     sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
   }
   derive_governor_values(root, control, sc);

@@ -47,6 +47,10 @@ std::unique_ptr<OwnedMission> make_mission(const std::vector<Vec3>& waypoints, d
   for (const auto& [key, value] : {std::pair<const char*, double>{"kp", kp}, {"ki", ki}, {"kd", kd}}) {
     (void)scenario::checked_number(value, key, false, kLabel);
   }
+  if (waypoints.empty()) {  // as the scenario reader's `waypoints = []` (docs/errors.md)
+    throw InputError(std::string(kLabel) + ": waypoints: expected a non-empty list of positions, got an "
+                                           "empty list (a mission without waypoints has nothing to fly)");
+  }
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     const std::string key = "waypoints[" + std::to_string(i) + "]";
     try {

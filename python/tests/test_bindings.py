@@ -84,6 +84,20 @@ def test_run_path_matches_dict(tmp_path):
     np.testing.assert_array_equal(a["tau_norm"], b["tau_norm"])
 
 
+def test_run_and_reach_into_an_existing_file_raise_the_input_error(tmp_path):
+    # issue 49: out=<a file> used to raise FileExistsError, not the package's error type.
+    taken = tmp_path / "taken"
+    taken.write_text("not a directory\n")
+    with pytest.raises(ag.InputError, match=r"^out: .*taken: cannot create output directory"):
+        ag.run(short_pet_erg(1.0), out=taken)
+    with pytest.raises(ag.InputError, match=r"^out: .*taken.*: cannot create output directory"):
+        ag.run(short_pet_erg(1.0), out=taken / "below")
+    sc = load("conreach_pd.toml")
+    with pytest.raises(ag.InputError, match=r"^out: .*taken: cannot create output directory"):
+        ag.reach(sc, out=taken)
+    assert taken.read_text() == "not a directory\n"
+
+
 def test_run_without_out_writes_no_file(monkeypatch):
     # run() fills the numpy arrays directly: no temporary directory, no CSV to read back.
     import tempfile
@@ -230,6 +244,12 @@ def test_mission_refuses_a_zero_mass():
         ag.Mission([[100.0, 0.0, 0.0]], mass=0.0)
     with pytest.raises(ValueError, match=r"Mission\(\): waypoints\[0\]\[0\]: must be finite"):
         ag.Mission([[math.nan, 0.0, 0.0]])
+
+
+def test_mission_refuses_no_waypoints():
+    # issue 49: Mission([]) was accepted and stepped as `done`.
+    with pytest.raises(ag.InputError, match=r"^Mission\(\): waypoints: expected a non-empty list"):
+        ag.Mission([])
 
 
 # ---- reach(): the balls -----------------------------------------------------------------------

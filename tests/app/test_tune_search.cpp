@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <vector>
 #include <filesystem>
@@ -105,6 +106,31 @@ TEST(TuneSearch, OnlyStallingGainsReportNoConvergedPoint) {
   EXPECT_EQ(j["outcome"], "none_converged");
   EXPECT_EQ(j["outcome_reason"], "none of the 6 evaluated points converged with every constraint kept");
   EXPECT_TRUE(j["best"].is_null());
+}
+
+// A set stop flag (the interruption flag, docs/pet-erg.md section 15 "Interruption") ends the
+// search at once: no candidate is evaluated after it, the result says it was stopped, and
+// tune.json's outcome is "interrupted" with the runs done against the budget (issue 49).
+TEST(TuneSearch, ASetStopFlagEndsTheSearchWithThePointsSoFar) {
+  const scenario::Document doc = source_file("examples/pet_erg_paper.toml");
+  std::atomic<bool> stop{true};
+  TuneSettings s = settings({{"control.kp", 2.0, 10.0}}, 100000, 2, "stop");
+  s.stop = &stop;
+  const TuneResult r = tune_search(doc, s);
+  EXPECT_TRUE(r.stopped);
+  EXPECT_TRUE(r.points.empty());
+  EXPECT_EQ(r.nominal.status, "stopped");
+  const nlohmann::json j = tune_json(s, r);
+  EXPECT_EQ(j["outcome"], "interrupted");
+  EXPECT_EQ(j["stopped"], true);
+  EXPECT_EQ(j["outcome_reason"], "the search was stopped after 0 of 100000 runs; no admissible point so far");
+  // Unset: the search runs its budget and says nothing of a stop.
+  stop = false;
+  s.budget = 4;
+  const TuneResult full = tune_search(doc, s);
+  EXPECT_FALSE(full.stopped);
+  EXPECT_EQ(full.points.size(), 4u);
+  EXPECT_FALSE(tune_json(s, full).contains("stopped"));
 }
 
 // Gains whose Gamma_d over/underflows are refused by the parser, not simulated.

@@ -163,10 +163,18 @@ std::string joined(const std::set<std::string>& names) {
 }
 
 /// A folder pre-filled by every command but `target`, in kPrefillOrder (view and export-aem read
-/// the run just before them), then `target`.
+/// the run just before them), then `target`. Without `run`, the folder export-aem reads is that
+/// of `attiguard reach`, which it refuses (issue 49: its trajectory.csv is the analysis'
+/// nominal, not a run's attitude): there it must exit 2 naming reach.json.
 void prefill_except(const fs::path& work, Cmd target, const std::string& parent) {
   for (Cmd c : kPrefillOrder) {
     if (c == target) continue;
+    if (c == Cmd::export_aem && target == Cmd::run) {
+      const Ran r = attiguard(work, args_of(c, parent));
+      EXPECT_EQ(r.exit_code, 2) << r.err;
+      EXPECT_NE(r.err.find("the folder of `attiguard reach` (reach.json)"), std::string::npos) << r.err;
+      continue;
+    }
     run_command(work, c, parent);
     if (::testing::Test::HasFatalFailure()) return;
   }

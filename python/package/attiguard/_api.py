@@ -37,13 +37,25 @@ def _source(scenario: Scenario) -> Union[str, Mapping[str, Any]]:
     raise TypeError(f"scenario must be a scenario file path or a dict, got {type(scenario).__name__}")
 
 
+def _make_out_dir(path: Path) -> None:
+    """Creates the output directory PATH (and its parents), as the CLI's --out does
+    (cli/output_dir.cpp): a file in its place, or a directory the system refuses, is the
+    package's InputError naming `out` (docs/python.md, "Errors"), never a bare OSError."""
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise _core.InputError(f"out: {path}: cannot create output directory ({e.strerror or e})") from None
+    if not path.is_dir():
+        raise _core.InputError(f"out: {path}: cannot create output directory (a file of that name exists)")
+
+
 class _OutDir:
     """The output directory: the given one (kept), or a temporary one removed afterwards."""
 
     def __init__(self, out: str | os.PathLike | None):
         self.keep = out is not None
         self.path = Path(out) if out is not None else Path(tempfile.mkdtemp(prefix="attiguard-"))
-        self.path.mkdir(parents=True, exist_ok=True)
+        _make_out_dir(self.path)
 
     def __enter__(self) -> "_OutDir":
         return self
@@ -77,7 +89,7 @@ def run(scenario: Scenario, out: str | os.PathLike | None = None) -> RunResult:
     _out_path(out)
     if out is not None:
         out_dir = Path(out)
-        out_dir.mkdir(parents=True, exist_ok=True)
+        _make_out_dir(out_dir)
     kind, summary_text, series = _core._run(_source(scenario),
                                             None if out_dir is None else str(out_dir))
     return RunResult(kind=kind, summary=json.loads(summary_text), series=dict(series),

@@ -1,6 +1,8 @@
 #include "attiguard/app/aem_export.hpp"
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <string>
 #include <system_error>
 
@@ -8,6 +10,33 @@
 #include "attiguard/io/aem_writer.hpp"
 
 namespace attiguard::app {
+
+namespace {
+
+/// The largest |‖q‖ − 1| of a trajectory.csv quaternion the AEM export takes (docs/interop.md):
+/// a run writes unit quaternions to 17 digits; anything farther is not an attitude.
+constexpr double kUnitQuaternionTolerance = 1e-6;
+
+/// x with 9 significant digits, for an error message.
+std::string shown(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", x);
+  return text;
+}
+
+/// InputError naming the file, the row and its time when the quaternion of `s` is not a unit
+/// quaternion (docs/interop.md): an AEM of it would claim an attitude it does not hold.
+void check_unit_quaternion(const io::AttitudeSample& s, const std::filesystem::path& source,
+                           std::size_t row) {
+  const double norm = std::sqrt(s.q_ib[0] * s.q_ib[0] + s.q_ib[1] * s.q_ib[1] +
+                                s.q_ib[2] * s.q_ib[2] + s.q_ib[3] * s.q_ib[3]);
+  if (std::abs(norm - 1.0) <= kUnitQuaternionTolerance) return;
+  throw InputError(source.string() + ": data row " + std::to_string(row + 1) + " (t = " +
+                   shown(s.t) + " s): the quaternion q_w, q_x, q_y, q_z has norm " +
+                   shown(norm) + ", not 1 (within 1e-06): not an attitude of a run");
+}
+
+}  // namespace
 
 std::vector<io::AttitudeSample> attitude_samples(const io::CsvTable& table,
                                                  const std::filesystem::path& source,
@@ -31,6 +60,7 @@ std::vector<io::AttitudeSample> attitude_samples(const io::CsvTable& table,
     io::AttitudeSample s;
     s.t = row[t];
     for (std::size_t k = 0; k < 4; ++k) s.q_ib[k] = row[q[k]];
+    check_unit_quaternion(s, source, samples.size());
     if (with_rates) {
       for (std::size_t k = 0; k < 3; ++k) s.omega_b[k] = row[w[k]];
     }

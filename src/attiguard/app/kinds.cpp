@@ -105,9 +105,14 @@ nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
 
 /// `run` of kind mission: both flights' results are written even when one failed numerically;
 /// then a failure of the scenario's own flight exits 3 (NumericalError) naming it.
+/// A run that writes files stops at the next control step of either flight once SIGINT or
+/// SIGTERM arrived (io/interruption.hpp), not only at its next output row.
 nlohmann::json run_mission(const Document& doc, const RunOptions& options) {
-  nlohmann::json summary =
-      run_kind<&scenario::parse_mission, &sim::record_mission, &sim::mission_summary>(doc, options);
+  const auto config = scenario::parse_mission(doc);
+  const std::atomic<bool>* stop = options.write_files ? &io::interruption_flag() : nullptr;
+  nlohmann::json summary = run_with_sink(options, [&](io::RowSink& rows) {
+    return sim::mission_summary(config, sim::record_mission(config, rows, stop));
+  });
   if (summary.contains("failure") && summary["failure"].is_string()) {
     throw NumericalError("mission: " + summary["failure"].get<std::string>() +
                          " (its summary, with the twin's results, is written)");

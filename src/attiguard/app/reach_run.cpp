@@ -104,7 +104,11 @@ nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
   j["name"] = sc.name;
   j["kind"] = "reach";
   j["model"] = sc.model;
-  j["rate_mode"] = std::string(reach::kRateModeNames.name(sc.settings.mode));
+  // The product metric's rate selection only: the coupled metric chooses its rate itself and
+  // refuses rate_mode (docs/reach.md, "Rate selection"), so it is not echoed as if used.
+  j["rate_mode"] = sc.settings.metric == reach::MetricKind::product
+                       ? nlohmann::json(std::string(reach::kRateModeNames.name(sc.settings.mode)))
+                       : nlohmann::json(nullptr);
   j["horizon"] = sc.settings.horizon;
   j["n_steps"] = sc.settings.steps;
   j["cells"] = cells;

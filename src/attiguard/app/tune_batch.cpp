@@ -106,7 +106,8 @@ std::vector<TunePoint> evaluate_tune_batch(const scenario::Document& nominal,
                                            const std::vector<TuneParameter>& parameters,
                                            const std::vector<std::vector<double>>& candidates,
                                            int threads, const std::filesystem::path& scratch,
-                                           const parallel::World& world) {
+                                           const parallel::World& world,
+                                           const std::atomic<bool>* stop) {
   std::vector<long> all(candidates.size());
   std::iota(all.begin(), all.end(), 0L);
   TuneBatchShare mine;
@@ -119,6 +120,11 @@ std::vector<TunePoint> evaluate_tune_batch(const scenario::Document& nominal,
     const std::filesystem::path dir = scratch / ("worker" + std::to_string(worker));
     for (std::size_t k = next++; k < mine.positions.size(); k = next++) {
       const auto& values = candidates[static_cast<std::size_t>(mine.positions[k])];
+      if (stop != nullptr && stop->load(std::memory_order_relaxed)) {
+        mine.points[k].values = values;  // not evaluated: the search was stopped first
+        mine.points[k].status = "stopped";
+        continue;
+      }
       try {
         mine.points[k] = evaluate_candidate(nominal, parameters, values, dir);
       } catch (const std::exception&) {

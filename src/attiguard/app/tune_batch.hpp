@@ -6,6 +6,7 @@
 /// every point, encoded exactly (every double bit for bit), so that all ranks take the same next
 /// decision of the search. No MPI header here: the exchange is parallel/mpi_world's.
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -22,11 +23,14 @@ namespace attiguard::app {
 /// `scratch`/worker<w>; returns every candidate's point, in candidate order, on every rank.
 /// A candidate whose evaluation throws does not skip the exchange (the other ranks would wait
 /// for ever): after it, every rank raises the error of the lowest such candidate (its exit
-/// code and message, whatever the split). Collective over `world`.
+/// code and message, whatever the split). Once `stop` is set and true (the interruption flag),
+/// the workers take no further candidate: those not evaluated come back with status "stopped",
+/// on every rank alike (docs/pet-erg.md, section 15, "Interruption"). Collective over `world`.
 [[nodiscard]] std::vector<TunePoint> evaluate_tune_batch(
     const scenario::Document& nominal, const std::vector<TuneParameter>& parameters,
     const std::vector<std::vector<double>>& candidates, int threads,
-    const std::filesystem::path& scratch, const parallel::World& world);
+    const std::filesystem::path& scratch, const parallel::World& world,
+    const std::atomic<bool>* stop = nullptr);
 
 /// Runs `step` on this rank, then exchanges whether it threw: when it threw on any rank, every
 /// rank raises the error of the lowest such rank (its exit code and message), so that a failure

@@ -230,6 +230,17 @@ bool append_points(TuneResult& r, std::vector<TunePoint> batch, const char* phas
   return improved;
 }
 
+/// Takes the points of `batch` that were not evaluated (status "stopped": the search was
+/// stopped first) out of it; whether there was one. Every rank sees the same batch
+/// (tune_batch.hpp), so every rank takes the same decision.
+bool drop_stopped(std::vector<TunePoint>& batch) {
+  const auto first = std::remove_if(batch.begin(), batch.end(),
+                                    [](const TunePoint& p) { return p.status == "stopped"; });
+  const bool any = first != batch.end();
+  batch.erase(first, batch.end());
+  return any;
+}
+
 /// The next `n` candidates: perturbed around the best point within `radius`, or (nothing
 /// admissible yet) a new Latin hypercube, to keep exploring.
 std::vector<std::vector<double>> next_candidates(const TuneSettings& s, const TuneResult& r, long n,
@@ -249,25 +260,33 @@ TuneResult tune_search(const scenario::Document& nominal, const TuneSettings& s)
   const std::filesystem::path scratch = s.scratch / ("rank" + std::to_string(s.world.rank));
   const auto evaluate = [&](const std::vector<TuneParameter>& parameters,
                             const std::vector<std::vector<double>>& candidates) {
-    return evaluate_tune_batch(nominal, parameters, candidates, s.threads, scratch, s.world);
+    return evaluate_tune_batch(nominal, parameters, candidates, s.threads, scratch, s.world, s.stop);
   };
   TuneResult r;
   campaign::Rng rng(campaign::run_seed(s.seed, 0));
   // The scenario as given (its own gains), for comparison; not a search point.
   r.nominal = std::move(evaluate({}, {std::vector<double>{}}).front());
   r.nominal.phase = "nominal";
+  r.stopped = r.nominal.status == "stopped";
   for (const TuneParameter& p : s.parameters) {
     r.nominal.values.push_back(scenario::number_at(nominal, p.key).value_or(std::nan("")));
   }
   const long samples = std::max(1L, s.budget / 2);
-  append_points(r, evaluate(s.parameters, latin_hypercube(s.parameters, samples, rng)), "sample");
+  if (!r.stopped) {
+    std::vector<TunePoint> first = evaluate(s.parameters, latin_hypercube(s.parameters, samples, rng));
+    r.stopped = drop_stopped(first);
+    append_points(r, std::move(first), "sample");
+  }
   double radius = 0.25;
   const long batch_size = s.batch;  // not the worker count: the same points whatever N and T
-  while (static_cast<long>(r.points.size()) < s.budget) {
+  // A stop (TuneSettings::stop) ends the search after the batch in hand, with its points so far.
+  while (!r.stopped && static_cast<long>(r.points.size()) < s.budget) {
     const long n = std::min(batch_size, s.budget - static_cast<long>(r.points.size()));
     const char* phase = r.best ? "refine" : "sample";
     const std::vector<std::vector<double>> batch = next_candidates(s, r, n, radius, rng);
-    const bool improved = append_points(r, evaluate(s.parameters, batch), phase);
+    std::vector<TunePoint> evaluated = evaluate(s.parameters, batch);
+    r.stopped = drop_stopped(evaluated);
+    const bool improved = append_points(r, std::move(evaluated), phase);
     // Shrink the neighbourhood after a batch without progress; once it is tiny, restart it
     // wide around the best (escapes a narrow valley without losing the best point).
     if (!improved) radius *= 0.7;
@@ -308,6 +327,14 @@ nlohmann::json tune_json(const TuneSettings& s, const TuneResult& r) {
     j["outcome_reason"] = "none of the " + std::to_string(r.points.size()) +
                           " evaluated points converged with every constraint kept";
     j["best"] = nullptr;
+  }
+  if (r.stopped) {  // an honest outcome: the budget was not spent (docs/pet-erg.md, section 15)
+    j["stopped"] = true;
+    j["outcome"] = "interrupted";
+    j["outcome_reason"] = "the search was stopped after " + std::to_string(r.points.size()) + " of " +
+                          std::to_string(s.budget) + " runs" +
+                          (r.best ? std::string("; best: the fastest admissible point so far")
+                                  : std::string("; no admissible point so far"));
   }
   nlohmann::json points = nlohmann::json::array();
   for (const TunePoint& p : r.points) points.push_back(point_json(s.parameters, p));

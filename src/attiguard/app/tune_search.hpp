@@ -6,6 +6,7 @@
 /// on the MPI ranks and their worker threads (tune_batch.hpp). Deterministic for a given seed
 /// whatever the rank and thread counts.
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -35,6 +36,10 @@ struct TuneSettings {
   long batch{4};
   std::filesystem::path scratch;  ///< working directory of the runs (nothing is written)
   parallel::World world{};        ///< the ranks that share each batch ({0, 1}: this process)
+  /// When set and true (the program's interruption flag, io/interruption.hpp), the workers take
+  /// no further candidate and the search ends after the batch in hand, keeping the points
+  /// evaluated so far (docs/pet-erg.md, section 15, "Interruption").
+  const std::atomic<bool>* stop{nullptr};
 };
 
 /// One evaluated candidate.
@@ -42,7 +47,9 @@ struct TunePoint {
   long index{0};
   std::string phase;                 ///< "sample", "refine" (or "nominal": the scenario as given)
   std::vector<double> values;        ///< TuneSettings::parameters order
-  std::string status;                ///< "ok", "rejected" (the parser refused it), "failed"
+  /// "ok", "rejected" (the parser refused it), "failed", or "stopped" (not evaluated: the
+  /// search was stopped first; never among TuneResult::points)
+  std::string status;
   std::string outcome;               ///< summary outcome when ok
   std::string reason;                ///< why rejected/failed, or outcome_reason
   long violations{0};                ///< `*_satisfied` flags that are false
@@ -61,6 +68,9 @@ struct TuneResult {
   std::optional<std::size_t> best;   ///< fastest admissible point, if any
   std::optional<double> eigenaxis_bang_bang_time;  ///< from the nominal run's summary
   TunePoint nominal;                 ///< the scenario as given (values: its keys, NaN if absent)
+  /// The search ended before its budget because TuneSettings::stop was set (points: those
+  /// evaluated before; docs/pet-erg.md, section 15, "Interruption").
+  bool stopped{false};
 };
 
 /// The half-widths (factors) of the default search space around the values derived from the

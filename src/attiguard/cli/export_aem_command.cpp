@@ -30,18 +30,48 @@ std::string summary_name(const std::filesystem::path& dir) {
   return j.contains("name") ? j["name"].get<std::string>() : "SPACECRAFT";
 }
 
+/// DIR as the folder of a run (docs/interop.md): a reach folder (its trajectory.csv is
+/// the analysis' nominal, not a flown attitude) is refused.
+void check_run_folder(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw InputError(dir.string() + ": not a directory (expected the --out DIR of a run)");
+  }
+  if (std::filesystem::exists(dir / "reach.json", ec) && !std::filesystem::exists(dir / "summary.json", ec)) {
+    throw InputError(dir.string() + ": the folder of `attiguard reach` (reach.json), not of a run: its "
+                     "trajectory.csv is the nominal of the analysis; export-aem exports the trajectory "
+                     "of `attiguard run SCENARIO --out DIR` or `campaign --replay K`");
+  }
+}
+
+/// The AEM metadata of --scenario, which must be the scenario of the run in DIR
+/// (docs/interop.md): a scenario of another kind than DIR/summary.json's (a reach scenario for a
+/// pet_erg run) is refused at its `kind`.
+io::AemMetadata scenario_ephemeris(const std::filesystem::path& scenario_path, const std::filesystem::path& dir) {
+  const scenario::Document doc = scenario::load_document(scenario_path);
+  const std::string kind = scenario::scenario_kind(doc);
+  std::error_code ec;
+  const std::string run_kind = std::filesystem::exists(dir / "summary.json", ec)
+                                   ? app::read_run_summary(dir / "summary.json")["kind"].get<std::string>()
+                                   : std::string();
+  if (kind == "reach" || (!run_kind.empty() && kind != run_kind)) {
+    scenario::fail_at(doc, "kind",
+                      "--scenario: a scenario of kind '" + kind + "' is not the scenario of the run in " +
+                          dir.string() + (run_kind.empty() ? std::string() : " (kind '" + run_kind + "')") +
+                          ": give the scenario the run was made of");
+  }
+  return scenario::parse_ephemeris(doc);
+}
+
 }  // namespace
 
 namespace {
 
 void export_aem_into(const ExportAemArguments& args) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(args.dir, ec)) {
-    throw InputError(args.dir.string() + ": not a directory (expected the --out DIR of a run)");
-  }
+  check_run_folder(args.dir);
   io::AemMetadata meta;
   if (!args.scenario.empty()) {
-    meta = scenario::parse_ephemeris(scenario::load_document(args.scenario));
+    meta = scenario_ephemeris(args.scenario, args.dir);
   } else {
     meta = scenario::default_ephemeris(summary_name(args.dir));
     meta.comments.push_back("attiguard run " + meta.object_name +

@@ -5,6 +5,7 @@
 
 #include <exception>
 #include <fstream>
+#include <new>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -64,6 +65,13 @@ void reach_into(const ReachArguments& args, const parallel::World& world, app::O
       summary = app::run_reach(sc, args.out_dir, world);
     } catch (const parallel::ThreadStartError& e) {  // located at the key that asked for them
       scenario::fail_in_table(doc, "partition", "threads", app::thread_start_advice(e, "threads = "));
+    } catch (const std::bad_alloc&) {  // the cells' analyses on those threads ran out of memory
+      if (sc.threads <= 1) throw;
+      scenario::fail_in_table(doc, "partition", "threads",
+                              "out of memory with threads = " + std::to_string(sc.threads) +
+                                  " (each thread analyses one cell at a time, with its own memory): "
+                                  "the system limits the memory of this process (ulimit -v); use "
+                                  "fewer threads");
     }
   } catch (const VerificationFailure&) {
     if (!world.root()) throw;

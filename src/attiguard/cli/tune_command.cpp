@@ -11,6 +11,7 @@
 #include "attiguard/app/outcome_line.hpp"
 #include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/tune_search.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/output_records.hpp"
 #include "attiguard/cli/commands.hpp"
@@ -99,6 +100,7 @@ void tune_into(const TuneArguments& args, const parallel::World& world, app::Out
   folder.set_subject("pet_erg", args.scenario.string());
   s.world = world;
   s.scratch = args.out_dir / ".scratch";
+  s.stop = &io::interruption_flag();  // a signal ends the search at the next evaluation
   if (world.root()) {
     std::cout << "Tuning " << args.scenario.string() << ": " << s.budget << " runs on "
               << world.size << " rank(s) x " << s.threads << " thread(s), seed " << s.seed << '\n';

@@ -2,13 +2,15 @@
 /// @file worker_pool.hpp
 /// Runs a body on W worker threads and never calls std::terminate (docs/errors.md, "No
 /// abort"): every thread is created before any starts working, so when the system refuses one
-/// (std::system_error: a process or user thread limit, `ulimit -u`) the threads already made
+/// (std::system_error: a process or user thread limit, `ulimit -u`; std::bad_alloc: a memory
+/// limit, `ulimit -v`) the threads already made
 /// are released without work, joined, and ThreadStartError is thrown; an exception a worker
 /// throws is caught in the worker and the first one is rethrown to the caller once all joined.
 
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -79,7 +81,12 @@ void run_workers(long workers, Body&& body) {
   } catch (const std::system_error& e) {
     release(false);
     throw ThreadStartError(static_cast<long>(pool.size()), workers, e.what());
-  } catch (...) {  // bad_alloc of the pool itself: the same release, then the caller's handler
+  } catch (const std::bad_alloc&) {
+    // The pool or a thread's state could not be allocated (a memory limit, `ulimit -v`): the
+    // same refusal as a thread the system refuses, located by the caller at its setting.
+    release(false);
+    throw ThreadStartError(static_cast<long>(pool.size()), workers, "out of memory");
+  } catch (...) {
     release(false);
     throw;
   }

@@ -1,5 +1,7 @@
 #include "attiguard/reach/partition.hpp"
 
+#include <new>
+
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -31,6 +33,11 @@ std::vector<Vec3> grid(double a, int n, double& cell_radius) {
   return pts;
 }
 
+/// The failure code of a cell that ran out of memory: not an exit code; raise_first_failure
+/// raises std::bad_alloc for it, so that the caller refuses the thread count at its key
+/// (docs/errors.md, "No abort"), never "std::bad_alloc" as a numerical failure.
+constexpr int kOutOfMemory = 0;
+
 /// This rank's cells (indices `share`) on `threads`. A failing cell must not skip the collective
 /// that follows (the other ranks would wait for ever), so failures are recorded per cell —
 /// "" or "<exit code> <message>" — and raised after the exchange.
@@ -43,6 +50,8 @@ void run_share(const ClosedLoop& loop, const std::vector<InitialSet>& cells, con
     const auto q = static_cast<std::size_t>(p);
     try {
       mine[q] = run_conreach(loop, cells[static_cast<std::size_t>(share[q])], settings);
+    } catch (const std::bad_alloc&) {  // raised as std::bad_alloc again (raise_first_failure)
+      failure[q] = std::to_string(kOutOfMemory) + " out of memory";
     } catch (const Error& e) {
       failure[q] = std::to_string(static_cast<int>(e.code())) + ' ' + e.what();
     } catch (const std::exception& e) {
@@ -94,6 +103,7 @@ void raise_first_failure(const std::vector<std::string>& failures) {
     const std::size_t space = f.find(' ');
     const int code = std::stoi(f.substr(0, space));
     const std::string message = f.substr(space + 1);
+    if (code == kOutOfMemory) throw std::bad_alloc();
     if (code == static_cast<int>(ExitCode::invalid_input)) throw InputError(message);
     if (code == static_cast<int>(ExitCode::verification_failed)) throw VerificationFailure(message);
     throw NumericalError(message);

@@ -148,6 +148,13 @@ void parse_disturbance(const TableReader& t, double control_period, double durat
   }
   if (t.has("disturbance_axis_b")) d.axis_b = t.direction("disturbance_axis_b");
   d.period = t.number_or("disturbance_period", 100.0, NumberRule::positive());
+  // A sinusoid the flight loop can resolve: at least two control periods (its Nyquist period;
+  // a subnormal period made 2 pi t / P overflow to a NaN torque at the first step).
+  if (const double least = 2.0 * control_period; !(d.period >= least)) {
+    t.fail("disturbance_period", "at least 2 x control_period = " + detail::format_number(least) +
+                                     " s (the shortest period the flight loop resolves, its Nyquist "
+                                     "period), got " + detail::format_number(d.period));
+  }
   d.hold = control_period;
   d.seed = seed;
   parse_adversary(t, d.kind, im.adversary);
@@ -213,8 +220,8 @@ void parse_sensor(const TableReader& t, double nyquist, std::uint64_t seed, sim:
 /// the flight loop (control_period > 0). Every magnitude is bounded where it enters
 /// (docs/scenario-format.md, "pet_erg", "Bounds of [imperfections]"): rate errors below the
 /// flight loop's Nyquist rate pi/control_period, attitude errors below pi/2, the disturbance's
-/// rate build-up over the duration below the Nyquist rate, the torque quantum at least
-/// tau_max 2^-52 (tau/q an exact integer).
+/// rate build-up over the duration below the Nyquist rate, the sinusoid's period at least
+/// 2 control_period, the torque quantum at least tau_max 2^-52 (tau/q an exact integer).
 sim::PetErgImperfections parse_imperfections(const TableReader& t, double control_period,
                                              double duration, const Mat3& J, double tau_max) {
   declare(t, {"disturbance", "disturbance_bound", "disturbance_axis_b", "disturbance_period",
@@ -494,7 +501,11 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
         parse_imperfections(*im, sc.control_period, sc.duration, sc.params.J, sc.params.tau_max);
   }
   parse_wheels(root, sc);
-  if (sc.margins == governor::Margins::robust) {
+  // The reference step cap bounds the lag of a delayed command only (docs/pet-erg.md, section 13).
+  control.used_only_if("robust_reference_step", sc.imperfections.delay_periods > 0,
+                       "only used with [imperfections] delay_periods = 1 (it caps the reference "
+                       "lag of a delayed command; without the delay there is none)");
+  if (sc.margins == governor::Margins::robust && sc.imperfections.delay_periods > 0) {
     sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
   }
   derive_governor_values(root, control, sc);

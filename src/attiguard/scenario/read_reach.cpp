@@ -34,6 +34,21 @@ std::shared_ptr<const reach::ClosedLoop> parse_system(const TableReader& sys, st
   return std::make_shared<reach::PdLoop>(J, kp, kd, sys.rotation("reference"));
 }
 
+/// The entries of metric_P: 0 or normal numbers (docs/scenario-format.md, "reach"): a subnormal
+/// entry made every derived ball subnormal, and reach.json a file the tool could not read back.
+void check_metric_entries(const TableReader& init, const reach::Mat3& P) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (P(i, j) != 0.0 && std::fpclassify(P(i, j)) == FP_SUBNORMAL) {
+        init.fail("metric_P", "entry [" + std::to_string(i) + "][" + std::to_string(j) + "] = " +
+                                  detail::format_number(P(i, j)) +
+                                  " is subnormal: each entry must be 0 or at least 2.2250738585072014e-308 in "
+                                  "magnitude (P_0 of Algorithm 1; scale the metric instead)");
+      }
+    }
+  }
+}
+
 /// [initial]: the initial set B_I(R0, a) × B_I(ω0, b) and P_0 [ConReach Alg. 1].
 void parse_initial(const TableReader& root, reach::InitialSet& initial) {
   const TableReader init = root.table("initial");
@@ -44,6 +59,7 @@ void parse_initial(const TableReader& root, reach::InitialSet& initial) {
   initial.omega_radius = init.number("omega_radius", NumberRule::non_negative());
   if (init.has("metric_P")) {
     initial.P0 = init.matrix3("metric_P");
+    check_metric_entries(init, initial.P0);
     if (!reach::is_spd(initial.P0)) {
       init.fail("metric_P", "must be symmetric positive definite (P_0 of Algorithm 1)");
     }

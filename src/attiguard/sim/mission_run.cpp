@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/io/interruption.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/cone_json.hpp"
 
@@ -21,7 +22,7 @@ double MissionResult::delta_v() const noexcept {
 }
 
 MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode mode,
-                               const MissionObserver& observer) {
+                               const MissionObserver& observer, const std::atomic<bool>* stop) {
   governor::GovernorParams params = sc.params;
   params.mode = mode;
   governor::AttitudeGovernor gov(params, sc.cones);
@@ -33,6 +34,9 @@ MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode
   res.min_pointing_margin = std::numeric_limits<double>::infinity();
   const governor::GovernorOutput* last = nullptr;
   auto filter = [&](double t, const dynamics::SpacecraftState& y, guidance::MissionCommand& cmd) {
+    if (stop != nullptr && stop->load(std::memory_order_relaxed)) {
+      throw io::Interrupted("interrupted: the mission flight was stopped at t = " + std::to_string(t) + " s");
+    }
     const lie::Mat3 R_d = lie::quat_to_rotation(cmd.q_id);
     const governor::GovernorOutput& out = gov.step(t, y.R[0], dynamics::omega_b_of(y), R_d);
     last = &out;
@@ -55,6 +59,8 @@ MissionResult simulate_mission(const MissionScenario& sc, governor::GovernorMode
   };
   try {
     res.flight = simulate_waypoint(sc.waypoint, seen, filter);
+  } catch (const io::Interrupted&) {
+    throw;  // a stop is not the flight's numerical failure: the run ends here
   } catch (const NumericalError& e) {
     res.flight.finite = false;
     res.failure = e.what();
@@ -109,7 +115,8 @@ nlohmann::json flight_json(const MissionScenario& sc, governor::GovernorMode mod
 
 }  // namespace
 
-MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows) {
+MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows,
+                              const std::atomic<bool>* stop) {
   rows.begin({"t", "p_x", "p_y", "p_z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z",
                      "omega_x", "omega_y", "omega_z", "tau_x", "tau_y", "tau_z", "tau_norm",
                      "thrust", "mode", "waypoint", "qg_w", "qg_x", "qg_y", "qg_z", "qd_w", "qd_x",
@@ -141,8 +148,9 @@ MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows) {
   // A numerical failure of one flight does not lose the other's results: each is recorded in
   // its MissionResult::failure and named in the summary (kinds.cpp then exits 3 when the
   // scenario's own flight failed).
-  f.own = simulate_mission(sc, mode, rows.wants_rows() ? MissionObserver(observer) : MissionObserver{});
-  f.twin = simulate_mission(sc, twin_mode);
+  f.own = simulate_mission(sc, mode, rows.wants_rows() ? MissionObserver(observer) : MissionObserver{},
+                           stop);
+  f.twin = simulate_mission(sc, twin_mode, {}, stop);
   return f;
 }
 

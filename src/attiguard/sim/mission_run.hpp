@@ -7,6 +7,7 @@
 /// the scenario itself is unconstrained) so the summary gives the cost of the constraints.
 
 
+#include <atomic>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -38,10 +39,14 @@ using MissionObserver = std::function<void(double t, const dynamics::SpacecraftS
                                            const governor::GovernorOutput& gov)>;
 
 /// Flies the mission with the governor in `mode` ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
-/// Algorithm 1); `observer` sees each sample with the governor's output.
+/// Algorithm 1); `observer` sees each sample with the governor's output. Once `stop` is set and
+/// true (the interruption flag of a run that writes files), the flight ends at its next control
+/// step with io::Interrupted, which is never recorded as the flight's failure (docs/mission.md,
+/// "Outcome").
 [[nodiscard]] MissionResult simulate_mission(const MissionScenario& sc,
                                              governor::GovernorMode mode,
-                                             const MissionObserver& observer = {});
+                                             const MissionObserver& observer = {},
+                                             const std::atomic<bool>* stop = nullptr);
 
 /// The scenario's own flight and its twin (the other setting of the governor).
 struct MissionFlights {
@@ -54,8 +59,10 @@ struct MissionFlights {
 /// Flies the scenario (its trajectory rows emitted into `rows`: t, p_x..p_z, v_x..v_z,
 /// q_w..q_z, omega_x..omega_z, tau_x..tau_z, tau_norm, thrust, mode, waypoint, qg_w..qg_z,
 /// qd_w..qd_z, trigger, min_margin) and its twin ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
-/// Algorithm 1). Throws NumericalError when a state or command is not finite.
-[[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows);
+/// Algorithm 1). Throws NumericalError when a state or command is not finite, io::Interrupted
+/// at the next control step of either flight once `stop` is set and true.
+[[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows,
+                                            const std::atomic<bool>* stop = nullptr);
 
 /// The outcome of one flight of a mission: that of its waypoint flight (waypoint_outcome()), or
 /// the numerical failure that ended it, or, when the governor withheld the thrust, "stalled by

@@ -310,7 +310,8 @@ double robust_margin_ratio(const sim::PetErgScenario& sc) {
 /// The softenings of θ_ref tried for the robust margins, in order: softer first (a smaller k_p
 /// lowers the hold error k_d h ω̇), then stiffer (a larger k_d dominates the wheels' and the
 /// body's gyroscopic coupling in the strict Lyapunov function).
-constexpr std::array<double, 13> kSoftenings{1.0, 2.0, 4.0, 8.0, 16.0, 64.0, 256.0,
+/// (1, the unscaled loop, is tried first by the caller.)
+constexpr std::array<double, 12> kSoftenings{2.0, 4.0, 8.0, 16.0, 64.0, 256.0,
                                              0.5, 0.25, 0.125, 1.0 / 16.0, 1.0 / 64.0, 1.0 / 256.0};
 
 /// k_p, k_d, κ, T_s, c_Γ, ε: the file's, or derived from the craft (docs/pet-erg.md, section 8).
@@ -337,7 +338,6 @@ void derive_governor_values(const TableReader& root, const TableReader& control,
     double best_ratio = robust_margin_ratio(sc);
     for (const double softening : kSoftenings) {
       if (best_ratio <= governor::DefaultGainConstants{}.robust_share) break;
-      if (softening == 1.0) continue;
       derive(softening);
       const double ratio = robust_margin_ratio(sc);
       if (ratio < best_ratio) {
@@ -346,9 +346,8 @@ void derive_governor_values(const TableReader& root, const TableReader& control,
       }
     }
     if (!(best_ratio < 1.0)) best = 1.0;
-    derive(best);
+    if (best != craft.softening) derive(best);
   }
-  apply_governor_values(sc.derived, sc.params);
   record_derived_values(sc.derived);
   const TableReader simulation = root.table("simulation");
   if (!simulation.has("step")) {

@@ -22,6 +22,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev
   libsdp-dev liblapack-dev libblas-dev libssl-dev
   libhdf5-dev                # campaign retained time series (docs/campaigns.md)
+  coinor-libipopt-dev        # the slew planner's NLP solver (docs/slew-planner.md)
   python3 python3-dev python3-numpy python3-matplotlib pybind11-dev
 )
 if [[ "$mode" == test ]]; then

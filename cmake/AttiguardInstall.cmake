@@ -30,7 +30,8 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/cmake/attiguardConfigVers
 set(attiguard_package_files ${PROJECT_BINARY_DIR}/cmake/attiguardConfig.cmake
                             ${PROJECT_BINARY_DIR}/cmake/attiguardConfigVersion.cmake)
 if(TARGET attiguard_core)
-  list(APPEND attiguard_package_files ${PROJECT_SOURCE_DIR}/cmake/FindCSDP.cmake)
+  list(APPEND attiguard_package_files ${PROJECT_SOURCE_DIR}/cmake/FindCSDP.cmake
+                                      ${PROJECT_SOURCE_DIR}/cmake/FindIpopt.cmake)
 endif()
 install(FILES ${attiguard_package_files} DESTINATION ${ATTIGUARD_INSTALL_CMAKEDIR})
 

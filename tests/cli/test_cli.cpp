@@ -115,7 +115,7 @@ TEST(CliContract, UnknownSubcommandListsTheSubcommands) {
   const auto r = run_cli(scratch_dir(), "frobnicate");
   EXPECT_EQ(r.exit_code, 2);
   expect_one_error_line(r);
-  EXPECT_NE(r.err.find("unknown subcommand 'frobnicate' (subcommands: run, check, reach, campaign"),
+  EXPECT_NE(r.err.find("unknown subcommand 'frobnicate' (subcommands: run, check, reach, plan, campaign"),
             std::string::npos) << r.err;
 }
 

@@ -324,3 +324,31 @@ std::string tune_outcome_line(const json& tune) {
 }
 
 }  // namespace attiguard::app
+
+namespace attiguard::app {
+
+std::string plan_outcome_line(const json& plan) {
+  Line line(text(plan, "outcome", "unknown"));
+  if (const auto d = number(plan, "duration")) {
+    std::string s = fig(*d) + " s";
+    if (const auto r = number(plan, "ratio_to_bang_bang")) s += " = " + fig(*r) + "x bang-bang";
+    line.detail(s);
+  }
+  if (const auto m = number(plan, "smallest_cone_margin_deg")) {
+    line.part("min cone margin " + fig(*m) + " deg");
+  }
+  if (const auto t = number(plan, "largest_torque_ratio")) line.part("max |tau|/tau_max " + fig(*t));
+  if (plan.is_object() && plan.contains("solver") && plan["solver"].is_object()) {
+    const json& s = plan["solver"];
+    std::string part = "IPOPT " + text(s, "status", "?");
+    if (const auto it = number(s, "iterations")) part += ", " + std::to_string(static_cast<long>(*it)) + " iterations";
+    line.part(part);
+  }
+  if (const auto t = number(plan, "planning_time")) line.part("planned in " + fig(*t) + " s");
+  if (plan.is_object() && plan.contains("reason") && plan["reason"].is_string()) {
+    line.part(plan["reason"].get<std::string>());
+  }
+  return line.str();
+}
+
+}  // namespace attiguard::app

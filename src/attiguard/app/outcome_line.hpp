@@ -40,4 +40,10 @@ namespace attiguard::app {
 /// the best admissible point (docs/pet-erg.md, "Tuning").
 [[nodiscard]] std::string tune_outcome_line(const nlohmann::json& tune);
 
+/// `attiguard plan` (plan.json): planned or no_admissible_path, the duration and its ratio to
+/// the eigenaxis bang-bang time, the dense check's smallest cone margin and largest ‖τ‖/τ_max,
+/// IPOPT's status and iterations, the planning time, the reason of a refusal
+/// (docs/slew-planner.md, "Outputs").
+[[nodiscard]] std::string plan_outcome_line(const nlohmann::json& plan);
+
 }  // namespace attiguard::app

@@ -29,7 +29,7 @@ constexpr const char* kScratch = ".scratch";  ///< campaign and tune workers' sc
 constexpr const char* kPlotList = "plots.txt";  ///< io/output_records.hpp: the figures written
 
 /// The commands in OutputCommand order (the index of their tables).
-constexpr std::size_t kCommands = 7;
+constexpr std::size_t kCommands = 8;
 
 constexpr std::size_t command_index(OutputCommand c) { return static_cast<std::size_t>(c); }
 
@@ -53,6 +53,7 @@ struct Tables {
                                               kPlotList};
     of[command_index(OutputCommand::view)] = {"view.html"};
     of[command_index(OutputCommand::export_aem)] = {"attitude.aem"};
+    of[command_index(OutputCommand::plan)] = {"plan.csv", "plan.json", resolved, kPlotList};
     for (const std::vector<std::string>& set : of) {
       for (const std::string& n : set) {
         if (std::find(known.begin(), known.end(), n) == known.end()) known.push_back(n);
@@ -70,6 +71,7 @@ constexpr NameTable<OutputCommand, kCommands> kStatusFiles{{{
     {OutputCommand::tune, "tune.json"},
     {OutputCommand::view, ""},
     {OutputCommand::export_aem, ""},
+    {OutputCommand::plan, "plan.json"},
 }}};
 
 const Tables& tables() {

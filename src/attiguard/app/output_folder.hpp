@@ -23,7 +23,7 @@
 namespace attiguard::app {
 
 /// The commands that write into an output folder.
-enum class OutputCommand { run, reach, campaign, replay, tune, view, export_aem };
+enum class OutputCommand { run, reach, campaign, replay, tune, view, export_aem, plan };
 
 /// The fixed file names `command` may write into its folder (figures, listed in plots.txt, are
 /// not fixed names). The one table of output names: every other list derives from it
@@ -35,7 +35,7 @@ enum class OutputCommand { run, reach, campaign, replay, tune, view, export_aem 
 [[nodiscard]] std::span<const std::string> known_output_names();
 
 /// The status file of `command` (its STATUS.partial says why it failed): "summary.json" for run
-/// and replay, "reach.json", "campaign.json", "tune.json"; "" for view and export-aem
+/// and replay, "reach.json", "campaign.json", "tune.json", "plan.json"; "" for view and export-aem
 /// (docs/conventions.md, "Outputs", point 3).
 [[nodiscard]] std::string status_name(OutputCommand command);
 

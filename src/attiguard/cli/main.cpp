@@ -22,6 +22,7 @@
 #include "attiguard/cli/campaign_command.hpp"
 #include "attiguard/cli/commands.hpp"
 #include "attiguard/cli/export_aem_command.hpp"
+#include "attiguard/cli/plan_command.hpp"
 #include "attiguard/cli/reach_command.hpp"
 #include "attiguard/cli/tune_command.hpp"
 #include "attiguard/cli/view_command.hpp"
@@ -143,6 +144,7 @@ struct Commands {
   attiguard::cli::RunArguments run;            // cli/run_command.cpp
   std::filesystem::path check;                 // cli/check_command.cpp
   attiguard::cli::ReachArguments reach;        // ConReach: cli/reach_command.cpp
+  attiguard::cli::PlanArguments plan;          // slew planner: cli/plan_command.cpp
   attiguard::cli::CampaignArguments campaign;  // Monte Carlo campaigns: cli/campaign_command.cpp
   std::string campaign_seed = "1";  // parsed after: CLI11 would wrap "-1" and clamp 2^64
   attiguard::cli::ExportAemArguments aem;      // CCSDS AEM: cli/export_aem_command.cpp
@@ -156,6 +158,7 @@ struct Commands {
   CLI::App* run_cmd{nullptr};
   CLI::App* check_cmd{nullptr};
   CLI::App* reach_cmd{nullptr};
+  CLI::App* plan_cmd{nullptr};
   CLI::App* campaign_cmd{nullptr};
   CLI::App* aem_cmd{nullptr};
   CLI::App* tune_cmd{nullptr};
@@ -194,6 +197,18 @@ void add_reach(CLI::App& app, Commands& c) {
   add_out_option(c.reach_cmd, c.reach.out_dir);
   c.reach_cmd->add_flag("--plot", c.reach.plot, "Also write PNG plots into DIR");
   c.reach_cmd->add_flag("--view", c.reach.view, "Also write DIR/view.html (docs/viewer.md)");
+}
+
+/// `plan`.
+void add_plan(CLI::App& app, Commands& c) {
+  c.plan_cmd = app.add_subcommand(
+      "plan", "Plan a near time-optimal slew that keeps every cone; write plan.csv and plan.json "
+              "into DIR (docs/slew-planner.md)");
+  add_scenario_argument(c.plan_cmd, c.plan.scenario, "Scenario file (TOML, kind = \"pet_erg\")");
+  c.plan_cmd->add_option("--out", c.plan.out_dir,
+                         "Output directory (created if missing; default out/<scenario>_plan)")
+      ->type_name("DIR");
+  c.plan_cmd->add_flag("--plot", c.plan.plot, "Also write PNG plots into DIR");
 }
 
 /// `campaign`.
@@ -305,6 +320,8 @@ int dispatch(const Commands& c) {
     attiguard::cli::check_command(c.check);
   } else if (c.reach_cmd->parsed()) {
     attiguard::cli::reach_command(c.reach);
+  } else if (c.plan_cmd->parsed()) {
+    attiguard::cli::plan_command(c.plan);
   } else if (c.campaign_cmd->parsed()) {
     attiguard::cli::campaign_command(c.campaign);
   } else if (c.tune_cmd->parsed()) {
@@ -315,7 +332,7 @@ int dispatch(const Commands& c) {
     attiguard::cli::export_aem_command(c.aem);
   } else {
     return fail(ExitCode::invalid_input,
-                "a subcommand is required: run, check, reach or campaign (see attiguard --help)");
+                "a subcommand is required: run, check, reach, plan or campaign (see attiguard --help)");
   }
   attiguard::io::throw_if_interrupted();  // a command that ended without looking (check, MPI ranks)
   return static_cast<int>(ExitCode::ok);
@@ -335,6 +352,7 @@ int run(int argc, char** argv) {
   Commands c;
   add_run_and_check(app, c);
   add_reach(app, c);
+  add_plan(app, c);
   add_campaign(app, c);
   add_export_aem(app, c);
   add_tune(app, c);

@@ -9,7 +9,7 @@ namespace attiguard::governor {
 
 namespace {
 
-/// q̇ = ½ q ⊗ [0, ω] (Waypoint paper eq. (2)).
+/// q̇ = ½ q ⊗ [0, ω] [Waypoint eq. (4)].
 lie::Quat quaternion_rate(const lie::Quat& q, const lie::Vec3& omega_b) noexcept {
   const lie::Vec3 eps = q.tail<3>();
   lie::Quat rate;

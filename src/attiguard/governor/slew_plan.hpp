@@ -4,7 +4,7 @@
 /// trajectory"): the nodes t_k of a direct transcription with the attitude quaternion q_k, the
 /// body rate ω_k and its derivative ω̇_k, joined by the cubic Hermite interpolant of the
 /// Hermite–Simpson transcription. Between nodes q(t) is the cubic through (q_k, q̇_k) and
-/// (q_{k+1}, q̇_{k+1}) with q̇ = ½ q ⊗ [0, ω] (Waypoint paper eq. (2)), normalised; ω(t) is the
+/// (q_{k+1}, q̇_{k+1}) with q̇ = ½ q ⊗ [0, ω] [Waypoint eq. (4)], normalised; ω(t) is the
 /// cubic through (ω_k, ω̇_k) and (ω_{k+1}, ω̇_{k+1}). The torque is the transcription's control,
 /// linear between a node, its interval's midpoint and the next node: a convex combination of
 /// torques the transcription kept within the bound, so the bound holds between them too.

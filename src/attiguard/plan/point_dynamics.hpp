@@ -2,7 +2,7 @@
 /// @file point_dynamics.hpp
 /// The slew's dynamics at one transcription point, with exact first and second derivatives
 /// (docs/slew-planner.md, "Derivatives"). The point's variables are z = [q (4), ω (3), u (3)]
-/// and f(z) = [½ q ⊗ [0, ω]; J⁻¹(u − ω × Jω)] (Waypoint paper eq. (2); PET-ERG paper eq. (1)),
+/// and f(z) = [½ q ⊗ [0, ω]; J⁻¹(u − ω × Jω)] ([Waypoint eqs. (4)-(5)]; [PET-ERG eq. (1)]),
 /// in the planner's scaled units (docs/slew-planner.md, "Scaling"). f is quadratic in z, so its
 /// Hessians are constant in z.
 

@@ -128,7 +128,7 @@ struct BodyState {
   lie::Vec3 omega_b;
 };
 
-/// ẋ of the rigid body (Waypoint paper eq. (2); PET-ERG paper eq. (1)) under the plan's torque.
+/// ẋ of the rigid body ([Waypoint eqs. (4)-(5)]; [PET-ERG eq. (1)]) under the plan's torque.
 BodyState body_rate(const BodyState& x, const governor::SlewPlan& plan, int k, double t) {
   const lie::Mat3& J = plan.inertia();
   const lie::Vec3 tau = plan.evaluate_in(k, t).tau_b;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file slew_problem.hpp
 /// The rest-to-rest slew the planner solves (docs/slew-planner.md, "The problem"): a rigid body
-/// J (PET-ERG paper eq. (1)) from R_0 to R_d, at rest at both ends, with ‖τ‖₂ ≤ τ_max, pointing
+/// J [PET-ERG eq. (1)] from R_0 to R_d, at rest at both ends, with ‖τ‖₂ ≤ τ_max, pointing
 /// cones [PET-ERG eq. (2b)] on body axes, a torque headroom and a cone margin.
 
 #include <optional>

@@ -5,7 +5,7 @@
 /// quantities are in the planner's scaled units (docs/slew-planner.md, "Scaling"): time by
 /// t_s, torque by the torque limit, J̄ = J/(τ_s t_s²); the torque constraint is ‖ū‖ ≤ 1.
 ///
-/// IPOPT is not thread-safe (docs/notes: dependencies): every solve of the process is
+/// IPOPT is not thread-safe (docs/slew-planner.md, "Speed"): every solve of the process is
 /// serialised behind one mutex.
 
 #include <string>

@@ -475,13 +475,31 @@ void check_admissible(const AdmissibilityTables& t, const sim::PetErgScenario& s
   }
 }
 
-}  // namespace
+/// `[plan]` (docs/slew-planner.md, "Options"; docs/scenario-format.md, "pet_erg"): read only when
+/// present, so that a scenario without it resolves as before.
+void parse_plan(const TableReader& root, sim::PetErgScenario& sc) {
+  const std::optional<TableReader> plan = root.optional_table("plan");
+  if (!plan) return;
+  declare(*plan, {"torque_headroom", "cone_margin_deg", "intervals"});
+  sc.plan.torque_headroom = plan->number_or("torque_headroom", sc.plan.torque_headroom,
+                                            {0.0, 1.0, false, true});
+  sc.plan.cone_margin =
+      plan->number_or("cone_margin_deg", 0.0, {0.0, 90.0, false, true}) * std::numbers::pi / 180.0;
+  sc.plan.intervals = static_cast<int>(plan->integer_or("intervals", 0, 0, 2000));
+  if (sc.plan.intervals != 0 && sc.plan.intervals < 4) {
+    plan->fail("intervals", "must be 0 (derived) or at least 4");
+  }
+}
 
-sim::PetErgScenario parse_pet_erg(const Document& doc) {
+/// Which checks of the governor's admissibility a pet_erg document gets.
+enum class PetErgChecks { run, plan };
+
+sim::PetErgScenario parse_pet_erg_with(const Document& doc, PetErgChecks checks) {
   sim::PetErgScenario sc;
   const TableReader root(doc);
   declare(root, {"kind", "name", "description", "governor", "body", "initial", "desired",
-                 "control", "erg", "cones", "simulation", "imperfections", "wheels", "tune"});
+                 "control", "erg", "cones", "simulation", "imperfections", "wheels", "tune",
+                 "plan"});
   sc.name = read_header(root, doc, "pet_erg");
   check_ephemeris_table(root);  // AEM export metadata (docs/interop.md)
   const TableReader control = parse_control(root, sc);
@@ -493,7 +511,10 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   sc.cones = parse_cones(root);
   const std::optional<TableReader> initial = parse_initial(root, sc);
   const TableReader desired = root.table("desired");
-  sc.desired = parse_desired(desired, sc.cones, sc.R0_ib);
+  sc.desired = parse_desired(desired,
+                             checks == PetErgChecks::run ? std::span<const ConeConstraint>(sc.cones)
+                                                         : std::span<const ConeConstraint>(),
+                             sc.R0_ib);
   parse_simulation(root, sc);
   if (const std::optional<TableReader> im = root.optional_table("imperfections")) {
     sc.imperfections =
@@ -507,14 +528,25 @@ sim::PetErgScenario parse_pet_erg(const Document& doc) {
   if (sc.margins == governor::Margins::robust && sc.imperfections.delay_periods > 0) {
     sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
   }
+  parse_plan(root, sc);
   derive_governor_values(root, control, sc);
   check_torque_threshold(control, sc.params);
   check_wheel_polytope(root, sc);
   const governor::GovernorDesign design = located_design(control, sc);
   check_step_counts(root, control, sc);
   root.finish();
-  check_admissible({root, initial, desired}, sc, design);
+  if (checks == PetErgChecks::run) check_admissible({root, initial, desired}, sc, design);
   return sc;
+}
+
+}  // namespace
+
+sim::PetErgScenario parse_pet_erg(const Document& doc) {
+  return parse_pet_erg_with(doc, PetErgChecks::run);
+}
+
+sim::PetErgScenario parse_pet_erg_slew(const Document& doc) {
+  return parse_pet_erg_with(doc, PetErgChecks::plan);
 }
 
 }  // namespace attiguard::scenario

@@ -8,6 +8,7 @@
 
 namespace attiguard::scenario {
 
+
 /// Parses and validates a `pet_erg` document (PET-ERG paper, Sec. V and Theorem 1); rejects
 /// unknown keys. Besides the types and ranges
 /// of every key it rejects, with InputError naming file:line:col and key:
@@ -16,5 +17,11 @@ namespace attiguard::scenario {
 ///   - an initial reference outside the field's domain (a_cᵀR_g(0)a_b ≤ δ);
 ///   - an initial state that is not admissible, V(R_0, ω_0, R_g(0)) > Γ(R_g(0)) (Theorem 1).
 [[nodiscard]] sim::PetErgScenario parse_pet_erg(const Document& doc);
+
+/// parse_pet_erg without the three admissibility checks listed above, for `attiguard plan`: the
+/// slew planner decides whether the slew is admissible and says why not with exit 4
+/// (docs/slew-planner.md, "Failures"); a target near a cone's edge, in the PET-ERG's repulsive
+/// band, is one it plans.
+[[nodiscard]] sim::PetErgScenario parse_pet_erg_slew(const Document& doc);
 
 }  // namespace attiguard::scenario

@@ -34,6 +34,13 @@ struct PetErgImperfections {
   double rate_bias_bound{0.0};
 };
 
+/// `[plan]` of a pet_erg scenario: the slew planner's settings (docs/slew-planner.md, "Options").
+struct SlewPlanSettings {
+  double torque_headroom{0.05};  ///< the plan keeps ‖τ‖ ≤ (1 − headroom) × the torque limit
+  double cone_margin{0.0};       ///< [rad] every cone kept with this angle to spare
+  int intervals{0};              ///< N (0: derived)
+};
+
 /// Everything a `pet_erg` run needs, validated (scenario::parse_pet_erg also checks the
 /// admissibility of the initial state, PET-ERG paper Theorem 1): the user's quantities only.
 /// What the governor runs with (reduced limits, wheel polytope, robust margin, tightened cones)
@@ -73,6 +80,7 @@ struct PetErgScenario {
   double output_interval{0.0};                ///< [simulation] output_interval [s]
   double convergence_tolerance{1e-4};         ///< [simulation] convergence_tolerance: on φ(R_dᵀR)
   integrate::IntegratorSettings integrator;   ///< [simulation] integrator keys
+  SlewPlanSettings plan;                      ///< [plan] (docs/slew-planner.md, "Options")
 };
 
 /// The craft's scales of `sc` the defaults derive from (docs/pet-erg.md, section 8): J, τ_max,

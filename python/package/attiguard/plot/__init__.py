@@ -41,7 +41,7 @@ def plotters():
 
     Imported lazily so that ``import attiguard.plot`` works without matplotlib.
     """
-    from . import campaign, mission, pet_erg, reach, rigid_body, tune, waypoint
+    from . import campaign, mission, pet_erg, plan, reach, rigid_body, tune, waypoint
 
     return {
         "rigid_body": rigid_body.plot,
@@ -51,4 +51,5 @@ def plotters():
         "campaign": campaign.plot,
         "mission": mission.plot,
         "tune": tune.plot,
+        "plan": plan.plot,
     }

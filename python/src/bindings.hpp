@@ -18,5 +18,7 @@ void bind_run(pybind11::module_& m);
 void bind_governor(pybind11::module_& m);
 /// Waypoint guidance [Waypoint Alg. 1] and the quaternion PID [Waypoint eq. (27)].
 void bind_guidance(pybind11::module_& m);
+/// The slew planner (docs/slew-planner.md): _plan_slew returns the plan as numpy arrays.
+void bind_plan(pybind11::module_& m);
 
 }  // namespace attiguard::python

@@ -256,6 +256,37 @@ def hostile_path(rng, base):
     yield ["x.toml"]
 
 
+def hostile_headroom(rng, base):
+    yield from hostile_nonnegative(rng, base)
+    yield 1.0
+    yield 1.5
+
+
+def hostile_margin_deg(rng, base):
+    yield from hostile_nonnegative(rng, base)
+    yield 90.0
+    yield 1e3
+
+
+def hostile_intervals(rng, base):
+    yield -1
+    yield 2
+    yield 2001
+    yield 8.0
+    yield "8"
+    yield None
+    yield 10 ** 40
+
+
+def hostile_points(rng, base):
+    yield 0
+    yield -1
+    yield 1001
+    yield 2.0
+    yield "2"
+    yield None
+
+
 def hostile_out(rng, base):
     yield 5
     yield ["out"]
@@ -521,6 +552,14 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
     "predict": (_fn("predict"), {"scenario": SCEN()}, False),
     "reach": (_fn("reach"), {"scenario": SCEN(), "out": Arg(_const(None), hostile_out),
                              "raise_on_failure": Arg(_const(True), hostile_bool)}, False),
+    "plan_slew": (_fn("plan_slew"),
+                  {"J": Arg(_J, hostile_inertia), "R_start": ROT(), "R_target": ROT(),
+                   "tau_max": Arg(_pos(0.5, 5.0), hostile_positive),
+                   "cones": Arg(_const([]), hostile_cones),
+                   "torque_headroom": Arg(_pos(0.0, 0.5), hostile_headroom, True),
+                   "cone_margin_deg": Arg(_pos(0.0, 10.0), hostile_margin_deg, True),
+                   "intervals": Arg(_const(0), hostile_intervals, True),
+                   "points_per_interval": Arg(lambda rng: rng.randint(1, 5), hostile_points, True)}, True),
     "to_toml": (_fn("to_toml"), {"scenario": Arg(lambda rng: _small_scenario(), hostile_scenario)}, True),
 }
 
@@ -532,6 +571,7 @@ EXEMPT = {
     "VerificationFailure.__init__": "exception class",
     "RunResult.__init__": "a record of run()'s results (a dataclass holding what run() returns)",
     "ReachResult.__init__": "a record of reach()'s results (a dataclass holding what reach() returns)",
+    "PlannedSlew.__init__": "a record of plan_slew()'s results (a dataclass holding what plan_slew() returns)",
 }
 
 

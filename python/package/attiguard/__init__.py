@@ -19,6 +19,7 @@ import typing as _typing
 
 if _typing.TYPE_CHECKING:  # what mypy and IDEs see; at run time __getattr__ below loads these
     from ._api import check, predict, reach, run
+    from ._plan import PlannedSlew, plan_slew
     from ._core import (Cone, Error, Governor, GovernorOutput, InputError, Mission,
                         NumericalError, QuaternionPid, RigidBody, VerificationFailure, distance,
                         expm, hat, is_rotation, keep_in_cone, keep_out_cone, logm, pd_torque,
@@ -39,6 +40,8 @@ _CORE_NAMES = (
 _EXPORTS: dict[str, tuple[str, str]] = {
     **{name: ("_core", name) for name in _CORE_NAMES},
     "check": ("_api", "check"),
+    "plan_slew": ("_plan", "plan_slew"),
+    "PlannedSlew": ("_plan", "PlannedSlew"),
     "predict": ("_api", "predict"),
     "reach": ("_api", "reach"),
     "run": ("_api", "run"),

@@ -145,6 +145,13 @@ class Governor:
     @property
     def cones(self) -> list[Cone]: ...
 
+# bind_plan.cpp: the slew planner (docs/slew-planner.md) on checked arguments; a dict of numpy
+# arrays (t, q, R, omega_b, omega_dot_b, tau_b, t_nodes, q_nodes, omega_b_nodes, tau_b_nodes)
+# and "report" (a dict). Used by attiguard.plan_slew (_plan.py).
+def _plan_slew(J: ArrayLike, R_start: ArrayLike, R_target: ArrayLike, tau_max: float,
+               cones: list[Cone], torque_headroom: float, cone_margin_deg: float, intervals: int,
+               points_per_interval: int) -> dict[str, Any]: ...
+
 # bind_guidance.cpp: waypoint paper, Algorithm 1 and the quaternion PID (27).
 class QuaternionPid:
     def __init__(self, kp: float = 20.0, ki: float = 2.0, kd: float = 20.0) -> None: ...

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -58,6 +60,28 @@ TEST(PlanCommand, PlansTheSlew170ExampleNearTheBangBangTime) {
                       "margin_0,margin_1,margin_2\n", 0),
             0u);
   EXPECT_GT(count_lines(csv), 100);
+  // The cones as summary.json writes them: what `view` draws.
+  ASSERT_EQ(j["cones"].size(), 3u);
+  EXPECT_EQ(j["cones"][0]["axis_b"].size(), 3u);
+  EXPECT_TRUE(j["cones"][0]["theta_c_deg"].is_number());
+  fs::remove_all(out);
+}
+
+TEST(PlanCommand, ViewDrawsThePlanWithItsCones) {
+  const fs::path out = fresh_dir("plan_view");
+  const CliResult r =
+      run_cli("plan examples/pet_erg_slew170.toml --view --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find((out / "view.html").string()), std::string::npos) << r.out;
+  const std::string html = read_file(out / "view.html");
+  EXPECT_NE(html.find("\"kind\":\"plan\""), std::string::npos);
+  EXPECT_NE(html.find("\"theta_c_deg\""), std::string::npos);
+  EXPECT_NE(html.find("\"margin_2\""), std::string::npos);  // plan.csv is the page's trajectory
+  // `attiguard view DIR` on the same folder writes the same page.
+  fs::remove(out / "view.html");
+  const CliResult v = run_cli("view '" + out.string() + "'");
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  EXPECT_EQ(read_file(out / "view.html"), html);
   fs::remove_all(out);
 }
 
@@ -94,6 +118,31 @@ half_angle_deg = 60.0
   const CliResult r = run_cli("plan '" + scenario.string() + "' --out '" + (dir / "out").string() + "'");
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("target attitude does not keep cones[0]"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(PlanCommand, ConesThatCloseEveryWayAreExit4WithTheReason) {
+  const fs::path dir = fresh_dir("plan_closed_ring");
+  // Twelve 12-deg keep-out cones on body +z in a ring 30 deg around inertial +z, where body +z
+  // starts: start and target keep them, no path leaves the ring.
+  std::string cones;
+  for (int k = 0; k < 12; ++k) {
+    const double a = 30.0 * k * std::numbers::pi / 180.0;
+    cones += "[[cones]]\ntype = \"keep_out\"\naxis_b = [0.0, 0.0, 1.0]\ndirection_i = [" +
+             std::to_string(0.5 * std::cos(a)) + ", " + std::to_string(0.5 * std::sin(a)) +
+             ", 0.8660254]\nhalf_angle_deg = 12.0\n";
+  }
+  const fs::path scenario = write_scenario(dir, cubesat_scenario(cones));
+  const CliResult r = run_cli("plan '" + scenario.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("no admissible path: the cones close every way"), std::string::npos) << r.err;
+  EXPECT_EQ(read_json(dir / "out" / "plan.json")["outcome"], "no_admissible_path");
+  EXPECT_FALSE(fs::exists(dir / "out" / "plan.csv"));
+  // Nothing to view: said so, at plan.csv.
+  const CliResult v = run_cli("view '" + (dir / "out").string() + "'");
+  EXPECT_EQ(v.exit_code, 2) << v.err;
+  EXPECT_NE(v.err.find("plan.csv: not found"), std::string::npos) << v.err;
   fs::remove_all(dir);
 }
 

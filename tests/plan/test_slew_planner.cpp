@@ -73,5 +73,30 @@ TEST(SlewPlanner, RefusesATargetInsideAKeepOutCone) {
   }
 }
 
+// A ring of keep-out cones around the start's body +z: start and target keep every cone, but
+// body +z cannot leave the ring's inside whatever the rotation about it, so every way is closed.
+// The planner must say so (exit 4), not return a plan or fail in the solver. Over crafts of very
+// different sizes (the roadmap's search is geometric, the answer must not depend on J).
+TEST(SlewPlanner, RefusesWhenTheConesCloseEveryWay) {
+  for (const double J : {0.02, 1.0, 4e6}) {
+    SlewProblem p = symmetric_problem(120.0, J, J * 0.05);
+    p.R_target = lie::exp(lie::Vec3(0.0, 1.0, 0.0) * 120.0 * kDeg);
+    for (int k = 0; k < 12; ++k) {
+      const double azimuth = 30.0 * kDeg * k;
+      const lie::Vec3 s(std::sin(30.0 * kDeg) * std::cos(azimuth),
+                        std::sin(30.0 * kDeg) * std::sin(azimuth), std::cos(30.0 * kDeg));
+      p.cones.push_back(governor::keep_out_cone(lie::Vec3::UnitZ(), s, 12.0 * kDeg));
+    }
+    try {
+      (void)plan_slew(p);
+      FAIL() << "J " << J << ": a plan through a closed ring of cones";
+    } catch (const VerificationFailure& e) {
+      EXPECT_NE(std::string(e.what()).find("no admissible path: the cones close every way"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace attiguard::plan::slew_planner_test

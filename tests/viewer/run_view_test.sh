@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CTest Viewer.BrowserOpensTheViewOfEveryKind (docs/viewer.md): runs the pet_erg, waypoint,
-# mission, reach and campaign examples with --view (or `attiguard view`), then opens each
+# mission, reach and campaign examples and the plan of pet_erg_slew170 with --view (or `attiguard view`), then opens each
 # view.html in headless Chromium (view_test.mjs). Skipped (exit 77) only when /usr/bin/chromium
 # is absent; CI installs it (scripts/setup.sh).
 # Usage: run_view_test.sh CLI NODE SOURCE_DIR WORK_DIR
@@ -25,6 +25,7 @@ cd "$src"
 "$cli" run examples/mission_sun_constrained.toml --out "$work/mission_sun_constrained" --view
 "$cli" run examples/rigid_body_pd.toml --out "$work/rigid_body_pd" --view
 "$cli" reach examples/conreach_paper.toml --out "$work/conreach_paper" --view
+"$cli" plan examples/pet_erg_slew170.toml --out "$work/pet_erg_slew170_plan" --view >/dev/null
 "$cli" campaign examples/pet_erg_campaign_retained.toml --runs 40 --seed 1 --out "$work/pet_erg_campaign" >/dev/null
 "$cli" campaign examples/pet_erg_campaign_retained.toml --seed 1 --out "$work/pet_erg_campaign" --replay 5 --view >/dev/null
 "$cli" view "$work/pet_erg_campaign"
@@ -38,4 +39,5 @@ fi
 
 "$node" "$src/tests/viewer/view_test.mjs" "$src/viewer" "$work/screenshots" \
   "$work/pet_erg_paper" "$work/waypoint_paper" "$work/mission_sun_constrained" \
-  "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5" "$work/rigid_body_pd"
+  "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5" "$work/rigid_body_pd" \
+  "$work/pet_erg_slew170_plan"

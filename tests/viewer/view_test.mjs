@@ -67,7 +67,8 @@ try {
       `${tag}: canvas not blank (${(100 * stats.nonBackground).toFixed(1)} % of pixels drawn, ${stats.colours} colours)`);
 
     if (kind !== 'campaign') {
-      const csv = readCsv(path.join(dir, 'trajectory.csv'));
+      // The page's trajectory: trajectory.csv of a run, plan.csv of a plan (docs/viewer.md).
+      const csv = readCsv(path.join(dir, kind === 'plan' ? 'plan.csv' : 'trajectory.csv'));
       const iq = csv.cols.indexOf('q_w');
       const it = csv.cols.indexOf('t');
       const tEnd = csv.rows[csv.rows.length - 1][it];

@@ -52,6 +52,12 @@ function headline(data) {
   }
   if (s.constraints_satisfied !== undefined) parts.push(`constraints satisfied: ${s.constraints_satisfied}`);
   if (s.min_pointing_margin !== undefined) parts.push(`min pointing margin ${(+s.min_pointing_margin).toPrecision(4)}`);
+  if (data.kind === 'plan' && s.duration !== undefined) {
+    const ratio = s.ratio_to_bang_bang !== null && s.ratio_to_bang_bang !== undefined ? ` = ${(+s.ratio_to_bang_bang).toPrecision(4)}× the eigenaxis bang-bang` : '';
+    parts.push(`duration ${(+s.duration).toPrecision(5)} s${ratio}`);
+    if (s.smallest_cone_margin_deg !== null && s.smallest_cone_margin_deg !== undefined) parts.push(`smallest cone margin ${(+s.smallest_cone_margin_deg).toPrecision(4)}°`);
+    if (s.largest_torque_ratio !== undefined) parts.push(`max ‖τ‖/τ_max ${(+s.largest_torque_ratio).toPrecision(4)}`);
+  }
   if (data.kind === 'campaign') parts.push(`runs ${s.runs_completed} / ${s.runs_requested}, ok ${s.ok}, violations ${s.violations}`);
   return parts.join(' · ');
 }

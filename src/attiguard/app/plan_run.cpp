@@ -8,6 +8,7 @@
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
 #include "attiguard/io/csv_writer.hpp"
 #include "attiguard/io/json_file.hpp"
+#include "attiguard/sim/cone_json.hpp"
 #include "attiguard/sim/pet_erg_slew_problem.hpp"
 
 namespace attiguard::app {
@@ -29,7 +30,9 @@ nlohmann::json common_fields(const sim::PetErgScenario& sc, const plan::SlewProb
   j["torque_limit"] = problem.tau_max;
   j["torque_headroom"] = problem.torque_headroom;
   j["cone_margin_deg"] = problem.cone_margin * kRadToDeg;
-  j["cones"] = problem.cones.size();
+  // The cones as summary.json writes them (sim/cone_json.hpp): `view` draws them from here.
+  j["cones"] = nlohmann::json::array();
+  for (const governor::ConeConstraint& c : problem.cones) j["cones"].push_back(sim::cone_json(c));
   return j;
 }
 

@@ -232,15 +232,24 @@ json view_data(const fs::path& dir) {
     few.filter_column = "sample";
     few.filter_below = 30;  // 30 sampled trajectories are drawn (docs/viewer.md)
     add_series(series, dir, "samples.csv", 0, few);
+  } else if (fs::is_regular_file(dir / "plan.json", ec)) {
+    // `attiguard plan`'s folder (docs/slew-planner.md, "Outputs"): the plan drawn as a run.
+    page["kind"] = "plan";
+    page["summary"] = io::read_json_object(dir / "plan.json");
+    if (auto s = read_series(dir / "plan.csv", kViewMaxRows, {})) series["trajectory"] = std::move(*s);
   } else if (fs::is_regular_file(dir / "summary.json", ec)) {
     page["summary"] = read_run_summary(dir / "summary.json");  // the reader of export-aem
     page["kind"] = page["summary"]["kind"];
     add_series(series, dir, "trajectory.csv", kViewMaxRows);
   } else {
-    throw InputError(dir.string() + ": no summary.json, reach.json or campaign.json (expected the "
-                                    "--out DIR of attiguard run, reach or campaign)");
+    throw InputError(dir.string() + ": no summary.json, reach.json, plan.json or campaign.json (expected "
+                                    "the --out DIR of attiguard run, reach, plan or campaign)");
   }
   if (page["kind"] != "campaign" && !series.contains("trajectory")) {
+    if (page["kind"] == "plan") {
+      throw InputError((dir / "plan.csv").string() + ": not found (the view shows the plan; a plan "
+                                                     "that found no admissible path has none)");
+    }
     throw InputError((dir / "trajectory.csv").string() + ": not found (the view shows the run's "
                                                          "trajectory; a campaign's runs have one after --replay K)");
   }

@@ -209,6 +209,7 @@ void add_plan(CLI::App& app, Commands& c) {
                          "Output directory (created if missing; default out/<scenario>_plan)")
       ->type_name("DIR");
   c.plan_cmd->add_flag("--plot", c.plan.plot, "Also write PNG plots into DIR");
+  c.plan_cmd->add_flag("--view", c.plan.view, "Also write DIR/view.html (browser viewer, docs/viewer.md)");
 }
 
 /// `campaign`.
@@ -269,7 +270,7 @@ void add_tune(CLI::App& app, Commands& c) {
 void add_view(CLI::App& app, Commands& c) {
   c.view_cmd = app.add_subcommand(
       "view", "Write DIR/view.html: a self-contained 3-D browser view of a result folder (docs/viewer.md)");
-  c.view_cmd->add_option("DIR", c.view, "Output folder of run, reach or campaign")
+  c.view_cmd->add_option("DIR", c.view, "Output folder of run, reach, plan or campaign")
       ->required()
       ->type_name("DIR");
 }

@@ -1,5 +1,5 @@
 /// @file plan_command.cpp
-/// `attiguard plan SCENARIO [--out DIR] [--plot]` (docs/slew-planner.md, "Outputs").
+/// `attiguard plan SCENARIO [--out DIR] [--plot] [--view]` (docs/slew-planner.md, "Outputs").
 
 #include "attiguard/cli/plan_command.hpp"
 
@@ -12,6 +12,7 @@
 #include "attiguard/app/output_folder.hpp"
 #include "attiguard/app/plan_run.hpp"
 #include "attiguard/cli/commands.hpp"
+#include "attiguard/cli/view_command.hpp"
 #include "attiguard/core/errors.hpp"
 #include "attiguard/io/json_file.hpp"
 #include "attiguard/io/json_reader.hpp"
@@ -32,6 +33,7 @@ void report(const PlanArguments& args, const std::filesystem::path& dir, const n
   if (planned) std::cout << "  " << (dir / "plan.csv").string() << '\n';
   std::cout << "  " << (dir / "plan.json").string() << "\n  "
             << (dir / scenario::kResolvedScenarioFile).string() << '\n';
+  if (args.view && planned) std::cout << "  " << write_run_view(dir).string() << '\n';
   if (args.plot && planned) {
     const PlotOutcome plots = plot_results("plan", dir);
     io::record_plots(dir, plots.written);

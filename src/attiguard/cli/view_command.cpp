@@ -33,7 +33,7 @@ void view_command(const std::filesystem::path& dir) {
   try {
     if (!std::filesystem::is_directory(dir, ec)) {
       throw InputError(dir.string() + ": not a directory (expected the --out DIR of attiguard run, "
-                                      "reach or campaign)");
+                                      "reach, plan or campaign)");
     }
     path = write_run_view(dir);
     folder.finish();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "attiguard/core/errors.hpp"
@@ -84,6 +85,26 @@ TranscriptionValues initial_guess(const AttitudePath& path, const SlewProblem& p
     z.head<4>() = lie::quat_multiply(seg.q_from, lie::quat_from_rotation_vector(angle * seg.axis_b));
     z.segment<3>(4) = omega * scales.time;
     z.segment<3>(7) = (u / scales.torque).cwiseMax(-1.0).cwiseMin(1.0);
+    out.points.push_back(z);
+  }
+  return out;
+}
+
+/// The coarse plan of the screening (docs/slew-planner.md, "Speed") sampled on the finer
+/// transcription's uniform grid: the initial guess of the fine solve. Sets the time scale to the
+/// coarse plan's duration (T̄ = 1).
+TranscriptionValues guess_from_plan(const governor::SlewPlan& coarse, const TranscriptionSetup& setup,
+                                    Scales& scales) {
+  scales.time = coarse.duration();
+  const int points = transcription_points(setup.transcription, setup.intervals);
+  TranscriptionValues out;
+  out.duration = 1.0;
+  for (int p = 0; p < points; ++p) {
+    const governor::SlewPlanSample s = coarse.evaluate(scales.time * p / (points - 1));
+    PointVector z;
+    z.head<4>() = s.q_ib;
+    z.segment<3>(4) = s.omega_b * scales.time;
+    z.segment<3>(7) = (s.tau_b / scales.torque).cwiseMax(-1.0).cwiseMin(1.0);
     out.points.push_back(z);
   }
   return out;
@@ -215,7 +236,8 @@ void require_end_keeps_cones(const SlewProblem& problem, const lie::Mat3& R, con
 
 /// One way around the cones refined until its dense check passes: the plan, or the failure.
 struct Refined {
-  bool ok{false};
+  bool ok{false};      ///< the dense check passed
+  bool solved{false};  ///< IPOPT solved at least once (`plan` is its last solution)
   governor::SlewPlan plan;
   DenseCheck check;
   std::string status;
@@ -225,7 +247,7 @@ struct Refined {
 };
 
 Refined refine(const AttitudePath& path, const SlewProblem& problem, const PlannerOptions& options,
-               int intervals) {
+               int intervals, const governor::SlewPlan* coarse = nullptr) {
   Refined out;
   TranscriptionSetup setup;
   setup.transcription = options.transcription;
@@ -236,7 +258,8 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
   scales.torque = (1.0 - problem.torque_headroom) * problem.tau_max;
   setup.q_start = path.waypoints.front();
   setup.q_target = path.waypoints.back();
-  TranscriptionValues values = initial_guess(path, problem, setup, scales);
+  TranscriptionValues values = coarse != nullptr ? guess_from_plan(*coarse, setup, scales)
+                                                 : initial_guess(path, problem, setup, scales);
   setup.J_scaled = problem.J_b / (scales.torque * scales.time * scales.time);
   setup.max_duration = 20.0;
   const int points = transcription_points(setup.transcription, intervals);
@@ -267,6 +290,7 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
       out.failure = "IPOPT stopped with status " + solved.status;
       return out;
     }
+    out.solved = true;
     values = solved.values;
     out.plan = to_plan(values, setup, scales, problem);
     const IntervalCheck check = check_intervals(out.plan, problem, options.dense_points_per_interval);
@@ -299,11 +323,52 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
   return out;
 }
 
-/// N: 32 for the eigenaxis, 16 more per further segment of the path, even (the eigenaxis
-/// bang-bang switch then falls on a node), at most 96 (docs/slew-planner.md, "Options").
+/// N: 24 for the eigenaxis, 8 more per further segment of the path, even (the eigenaxis
+/// bang-bang switch then falls on a node), at most 64 (docs/slew-planner.md, "Options").
 int derived_intervals(const AttitudePath& path) {
   const int segments = static_cast<int>(path.waypoints.size()) - 1;
-  return std::min(96, 32 + 16 * (segments - 1));
+  return std::min(64, 24 + 8 * (segments - 1));
+}
+
+/// The screening of the ways around the cones (docs/slew-planner.md, "Speed").
+struct Screening {
+  std::vector<bool> kept;                                ///< [way] solved finely
+  std::vector<std::optional<governor::SlewPlan>> coarse;  ///< [way] its coarse plan, if solved
+  int solves{0};
+  int iterations{0};
+};
+
+/// With more than one way, each is solved once on a mesh of a quarter of its intervals (at least
+/// 8), without the dense check's re-solves; the ways whose coarse duration is within
+/// kScreenTolerance of the best are kept, as are those whose coarse solve failed (nothing is
+/// known of them). With one way, it is kept and nothing is solved.
+Screening screen_ways(const std::vector<AttitudePath>& paths, const std::vector<int>& intervals,
+                      const SlewProblem& problem, const PlannerOptions& options) {
+  Screening out;
+  out.kept.assign(paths.size(), true);
+  out.coarse.resize(paths.size());
+  if (paths.size() < 2) return out;
+  PlannerOptions coarse_options = options;
+  coarse_options.max_refinements = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const int coarse_intervals = std::max(8, intervals[i] / 8 * 2);
+    Refined r = refine(paths[i], problem, coarse_options, coarse_intervals);
+    out.solves += r.solves;
+    out.iterations += r.iterations;
+    if (r.solved) {
+      best = std::min(best, r.plan.duration());
+      out.coarse[i] = std::move(r.plan);
+    }
+  }
+  // The first way of the least coarse duration; the others stay the fallback.
+  bool chosen = false;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    out.kept[i] = !chosen && out.coarse[i] && out.coarse[i]->duration() == best;
+    chosen = chosen || out.kept[i];
+  }
+  if (!chosen) out.kept.assign(paths.size(), true);  // no coarse solve succeeded: all, cold
+  return out;
 }
 
 }  // namespace
@@ -326,26 +391,41 @@ PlannedSlew plan_slew(const SlewProblem& problem, const PlannerOptions& options)
         << " eigenaxis segments checked)";
     throw VerificationFailure(msg.str());
   }
+  const std::size_t n_ways = search.paths.size();
+  std::vector<int> intervals(n_ways);
+  for (std::size_t i = 0; i < n_ways; ++i) {
+    intervals[i] = options.intervals > 0 ? options.intervals : derived_intervals(search.paths[i]);
+  }
+  int solves = 0, iterations = 0;
+  const Screening screening = screen_ways(search.paths, intervals, problem, options);
+  solves += screening.solves;
+  iterations += screening.iterations;
   PlannedSlew best;
   bool have = false;
   std::string failures;
-  int solves = 0, iterations = 0;
-  for (const AttitudePath& path : search.paths) {
-    const int intervals = options.intervals > 0 ? options.intervals : derived_intervals(path);
-    Refined r = refine(path, problem, options, intervals);
-    solves += r.solves;
-    iterations += r.iterations;
-    if (!r.ok) {
-      failures += (failures.empty() ? "" : "; ") + r.failure;
-      continue;
-    }
-    if (!have || r.plan.duration() < best.plan.duration()) {
-      best.plan = std::move(r.plan);
-      best.report.check = r.check;
-      best.report.solver_status = r.status;
-      best.report.intervals = intervals;
-      best.report.path_waypoints = static_cast<int>(path.waypoints.size()) - 2;
-      have = true;
+  // The ways the screening kept, from their coarse plans; the others only if none of those gives
+  // a plan (then from the roadmap's path, as without screening).
+  for (const bool kept_pass : {true, false}) {
+    if (have) break;
+    for (std::size_t i = 0; i < n_ways; ++i) {
+      if (screening.kept[i] != kept_pass) continue;
+      const governor::SlewPlan* coarse =
+          kept_pass && screening.coarse[i] ? &*screening.coarse[i] : nullptr;
+      Refined r = refine(search.paths[i], problem, options, intervals[i], coarse);
+      solves += r.solves;
+      iterations += r.iterations;
+      if (!r.ok) {
+        failures += (failures.empty() ? "" : "; ") + r.failure;
+        continue;
+      }
+      if (!have || r.plan.duration() < best.plan.duration()) {
+        best.plan = std::move(r.plan);
+        best.report.check = r.check;
+        best.report.solver_status = r.status;
+        best.report.intervals = intervals[i];
+        best.report.path_waypoints = static_cast<int>(search.paths[i].waypoints.size()) - 2;
+        have = true;
+      }
     }
   }
   if (!have) throw NumericalError("plan: no plan: " + failures);

@@ -1,5 +1,6 @@
 #include "attiguard/plan/transcription_nlp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -95,9 +96,20 @@ class SlewNlp final : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_starting_point(Index, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
-                          bool init_lambda, Number*) override {
-    if (!init_x || init_z || init_lambda) return false;
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number* z_L, Number* z_U,
+                          Index m, bool init_lambda, Number* lambda) override {
+    if (!init_x) return false;
+    if (init_z || init_lambda) {  // a warm start: the guess's multipliers (warm_startable)
+      if (guess_.z_lower.size() != static_cast<std::size_t>(n) ||
+          guess_.lambda.size() != static_cast<std::size_t>(m)) {
+        return false;
+      }
+      if (init_z) {
+        std::copy(guess_.z_lower.begin(), guess_.z_lower.end(), z_L);
+        std::copy(guess_.z_upper.begin(), guess_.z_upper.end(), z_U);
+      }
+      if (init_lambda) std::copy(guess_.lambda.begin(), guess_.lambda.end(), lambda);
+    }
     for (int p = 0; p < points_; ++p) {
       for (int i = 0; i < kPointVars; ++i) x[var(p) + i] = guess_.points[static_cast<std::size_t>(p)](i);
     }
@@ -249,13 +261,20 @@ class SlewNlp final : public Ipopt::TNLP {
     return !io::interrupted();
   }
 
-  void finalize_solution(Ipopt::SolverReturn, Index, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number,
+  void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number* z_L,
+                         const Number* z_U, Index m, const Number*, const Number* lambda, Number,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     result.values.points.resize(static_cast<std::size_t>(points_));
     for (int p = 0; p < points_; ++p) result.values.points[static_cast<std::size_t>(p)] = point(x, p);
     result.values.duration = x[var_T()];
+    result.values.z_lower.assign(z_L, z_L + n);
+    result.values.z_upper.assign(z_U, z_U + n);
+    result.values.lambda.assign(lambda, lambda + m);
   }
+
+  /// The program's sizes (n variables, m constraints).
+  [[nodiscard]] int variable_count() const noexcept { return variables(); }
+  [[nodiscard]] int constraint_count() const noexcept { return constraints(); }
 
  private:
   struct Interval {
@@ -353,6 +372,17 @@ class SlewNlp final : public Ipopt::TNLP {
   Eigen::Matrix<double, 3, 4> terminal_;
 };
 
+/// The barrier parameter and the push from the bounds of a warm start.
+constexpr double kWarmMuInit = 1e-8;
+constexpr double kWarmPush = 1e-9;
+
+/// Whether `guess` carries multipliers of `nlp`'s sizes (a warm start).
+bool warm_startable(const TranscriptionValues& guess, const SlewNlp& nlp) {
+  const auto n = static_cast<std::size_t>(nlp.variable_count());
+  return guess.z_lower.size() == n && guess.z_upper.size() == n &&
+         guess.lambda.size() == static_cast<std::size_t>(nlp.constraint_count());
+}
+
 /// IPOPT is not thread-safe: one solve at a time in the process.
 std::mutex& ipopt_mutex() {
   static std::mutex m;
@@ -412,7 +442,20 @@ TranscriptionResult solve_transcription(const TranscriptionSetup& setup,
   app->Options()->SetNumericValue("acceptable_tol", 1e-6);
   app->Options()->SetNumericValue("constr_viol_tol", 1e-9);
   app->Options()->SetNumericValue("acceptable_constr_viol_tol", 1e-7);
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  if (warm_startable(guess, *nlp)) {
+    // From a solution of a program of the same structure (docs/slew-planner.md, "Speed"): its
+    // multipliers, a small barrier parameter, the point hardly pushed from its bounds.
+    app->Options()->SetStringValue("warm_start_init_point", "yes");
+    app->Options()->SetStringValue("mu_strategy", "monotone");
+    app->Options()->SetNumericValue("mu_init", kWarmMuInit);
+    for (const char* o : {"warm_start_bound_push", "warm_start_bound_frac",
+                          "warm_start_slack_bound_push", "warm_start_slack_bound_frac",
+                          "warm_start_mult_bound_push"}) {
+      app->Options()->SetNumericValue(o, kWarmPush);
+    }
+  } else {
+    app->Options()->SetStringValue("mu_strategy", "adaptive");
+  }
   if (app->Initialize() != Ipopt::Solve_Succeeded) {
     throw NumericalError("plan: IPOPT could not be initialised");
   }

@@ -47,6 +47,10 @@ struct TranscriptionSetup {
 struct TranscriptionValues {
   std::vector<PointVector> points;
   double duration{1.0};
+  /// IPOPT's multipliers at a solution (bounds z_L, z_U and constraints λ), or empty. A guess
+  /// that carries them, for a program of the same structure (a re-solve after a dense check),
+  /// warm-starts IPOPT near its barrier parameter's end instead of at 0.1.
+  std::vector<double> z_lower, z_upper, lambda;
 };
 
 /// What IPOPT returned.

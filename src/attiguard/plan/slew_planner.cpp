@@ -24,6 +24,12 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 /// The program keeps its torque and cone constraints this much inside the plan's own (relative
 /// torque; angle in rad), so that IPOPT's constraint tolerance (10⁻⁹) never crosses them.
 constexpr double kInside = 1e-7;
+/// A cone is left out of the program at the points where the initial guess keeps it with this
+/// much beyond the margin (docs/slew-planner.md, "Speed") [rad].
+constexpr double kPruneAngle = 30.0 * std::numbers::pi / 180.0;
+/// IPOPT's tolerance in the screening's coarse solves: their durations are compared and seed the
+/// fine solve, nothing else (docs/slew-planner.md, "Speed").
+constexpr double kScreenTolerance = 1e-6;
 
 /// The scales of the program (docs/slew-planner.md, "Scaling"): time t_s, torque τ_s.
 struct Scales {
@@ -234,6 +240,78 @@ void require_end_keeps_cones(const SlewProblem& problem, const lie::Mat3& R, con
   }
 }
 
+/// Per cone and point: whether the cone is imposed there (docs/slew-planner.md, "Speed").
+using ConeRows = std::vector<std::vector<bool>>;
+
+/// The cones imposed at each point: those the guess passes within kPruneAngle of (their
+/// boundary, beyond the margin); the others are left out of the program until a dense check
+/// finds the plan near them.
+ConeRows far_from_guess(const TranscriptionValues& guess, const SlewProblem& problem, int points) {
+  ConeRows rows(problem.cones.size(), std::vector<bool>(static_cast<std::size_t>(points), true));
+  for (std::size_t c = 0; c < problem.cones.size(); ++c) {
+    for (int p = 0; p < points; ++p) {
+      const lie::Mat3 R = lie::quat_to_rotation(guess.points[static_cast<std::size_t>(p)].head<4>().normalized());
+      const double margin = cone_angle_margin(problem.cones[c], R) - problem.cone_margin;
+      rows[c][static_cast<std::size_t>(p)] = margin < kPruneAngle;
+    }
+  }
+  return rows;
+}
+
+/// The cosine each imposed cone must keep at each point: the margin, kInside and the point's
+/// tightening; −∞ (not imposed) where `rows` leaves it out.
+void set_cone_levels(TranscriptionSetup& setup, const SlewProblem& problem,
+                     const std::vector<std::vector<double>>& tightening, const ConeRows& rows) {
+  for (std::size_t c = 0; c < problem.cones.size(); ++c) {
+    auto& cosine = setup.cones[c].cosine_at_point;
+    cosine.resize(rows[c].size());
+    for (std::size_t p = 0; p < cosine.size(); ++p) {
+      cosine[p] = rows[c][p] ? tightened_cosine(problem.cones[c],
+                                                problem.cone_margin + kInside + tightening[c][p])
+                             : -std::numeric_limits<double>::infinity();
+    }
+  }
+}
+
+/// What a dense check says of a solve.
+enum class Verdict {
+  pass,             ///< every cone kept with its margin
+  tighten,          ///< some interval misses a margin: its points are tightened
+  pruned_too_much,  ///< the plan came near a cone left out: it is imposed everywhere again
+};
+
+/// Judges the dense check's cone margins (docs/slew-planner.md, "Between the nodes"): a miss in
+/// an interval where the cone was left out imposes that cone at every point; a miss where it
+/// was imposed tightens the interval's points by 1.5× the deficit.
+Verdict judge(const IntervalCheck& check, const SlewProblem& problem, int stride,
+              std::vector<std::vector<double>>& tightening, ConeRows& rows) {
+  Verdict verdict = Verdict::pass;
+  const int intervals = static_cast<int>(check.cone_margin.size());
+  for (std::size_t c = 0; c < problem.cones.size(); ++c) {
+    bool left_out_missed = false;
+    for (int k = 0; k < intervals; ++k) {
+      const double deficit = problem.cone_margin - check.cone_margin[static_cast<std::size_t>(k)][c];
+      // Near a left-out cone (within a tenth of the pruning angle) counts as a miss too.
+      bool was_left_out = false;
+      for (int p = k * stride; p <= (k + 1) * stride; ++p) was_left_out |= !rows[c][static_cast<std::size_t>(p)];
+      if (was_left_out && deficit > -0.1 * kPruneAngle) {
+        left_out_missed = true;
+        continue;
+      }
+      if (deficit <= 0.0) continue;
+      if (verdict == Verdict::pass) verdict = Verdict::tighten;
+      for (int p = k * stride; p <= (k + 1) * stride; ++p) {
+        tightening[c][static_cast<std::size_t>(p)] += 1.5 * deficit + 1e-6;
+      }
+    }
+    if (left_out_missed) {
+      rows[c].assign(rows[c].size(), true);
+      verdict = Verdict::pruned_too_much;
+    }
+  }
+  return verdict;
+}
+
 /// One way around the cones refined until its dense check passes: the plan, or the failure.
 struct Refined {
   bool ok{false};      ///< the dense check passed
@@ -247,13 +325,15 @@ struct Refined {
 };
 
 Refined refine(const AttitudePath& path, const SlewProblem& problem, const PlannerOptions& options,
-               int intervals, const governor::SlewPlan* coarse = nullptr) {
+               int intervals, const governor::SlewPlan* coarse = nullptr,
+               double tolerance = TranscriptionSetup{}.tolerance) {
   Refined out;
   TranscriptionSetup setup;
   setup.transcription = options.transcription;
   setup.intervals = intervals;
   setup.max_iterations = options.max_iterations;
   setup.max_seconds = options.max_solve_seconds;
+  setup.tolerance = tolerance;
   Scales scales;
   scales.torque = (1.0 - problem.torque_headroom) * problem.tau_max;
   setup.q_start = path.waypoints.front();
@@ -273,15 +353,9 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
   }
   const double torque_target = 1.0 - problem.torque_headroom;
   setup.torque_limit = 1.0 - kInside;
-  for (int round = 0; round <= options.max_refinements; ++round) {
-    for (std::size_t c = 0; c < problem.cones.size(); ++c) {
-      setup.cones[c].cosine_at_point.resize(static_cast<std::size_t>(points));
-      for (int p = 0; p < points; ++p) {
-        setup.cones[c].cosine_at_point[static_cast<std::size_t>(p)] = tightened_cosine(
-            problem.cones[c],
-            problem.cone_margin + kInside + tightening[c][static_cast<std::size_t>(p)]);
-      }
-    }
+  ConeRows rows = far_from_guess(values, problem, points);
+  for (int round = 0; round <= options.max_refinements;) {
+    set_cone_levels(setup, problem, tightening, rows);
     const TranscriptionResult solved = solve_transcription(setup, values);
     ++out.solves;
     out.iterations += solved.iterations;
@@ -295,24 +369,16 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
     out.plan = to_plan(values, setup, scales, problem);
     const IntervalCheck check = check_intervals(out.plan, problem, options.dense_points_per_interval);
     out.check = check.overall;
-    bool pass = check.overall.largest_torque_ratio <= torque_target;
-    for (int k = 0; k < intervals; ++k) {
-      for (std::size_t c = 0; c < problem.cones.size(); ++c) {
-        const double deficit = problem.cone_margin - check.cone_margin[static_cast<std::size_t>(k)][c];
-        if (deficit <= 0.0) continue;
-        pass = false;
-        for (int p = k * stride; p <= (k + 1) * stride; ++p) {
-          tightening[c][static_cast<std::size_t>(p)] += 1.5 * deficit + 1e-6;
-        }
-      }
-    }
-    if (pass) {
+    const Verdict verdict = judge(check, problem, stride, tightening, rows);
+    if (verdict == Verdict::pruned_too_much) continue;  // not a refinement: the same program
+    if (verdict == Verdict::pass && check.overall.largest_torque_ratio <= torque_target) {
       out.ok = true;
       return out;
     }
     if (check.overall.largest_torque_ratio > torque_target) {
       setup.torque_limit *= torque_target / check.overall.largest_torque_ratio * (1.0 - 1e-4);
     }
+    ++round;
   }
   std::ostringstream msg;
   msg.precision(4);
@@ -353,7 +419,7 @@ Screening screen_ways(const std::vector<AttitudePath>& paths, const std::vector<
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < paths.size(); ++i) {
     const int coarse_intervals = std::max(8, intervals[i] / 8 * 2);
-    Refined r = refine(paths[i], problem, coarse_options, coarse_intervals);
+    Refined r = refine(paths[i], problem, coarse_options, coarse_intervals, nullptr, kScreenTolerance);
     out.solves += r.solves;
     out.iterations += r.iterations;
     if (r.solved) {

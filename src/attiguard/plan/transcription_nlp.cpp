@@ -85,12 +85,11 @@ class SlewNlp final : public Ipopt::TNLP {
       g_l[row] = -kInfinity;  // ‖ū‖² ≤ torque_limit²
       g_u[row] = setup_.torque_limit * setup_.torque_limit;
       ++row;
-      if (cone_point(p)) {
-        for (std::size_t c = 0; c < setup_.cones.size(); ++c) {
-          g_l[row] = 0.0;  // qᵀ(M − c_p I)q ≥ 0
-          g_u[row] = kInfinity;
-          ++row;
-        }
+      for (const TranscribedCone& cone : setup_.cones) {
+        if (!imposed(cone, p)) continue;
+        g_l[row] = 0.0;  // qᵀ(M − c_p I)q ≥ 0
+        g_u[row] = kInfinity;
+        ++row;
       }
     }
     return true;
@@ -156,11 +155,10 @@ class SlewNlp final : public Ipopt::TNLP {
     for (int p = 0; p < points_; ++p) {
       const PointVector z = point(x, p);
       g[row++] = z.segment<3>(7).squaredNorm();
-      if (cone_point(p)) {
-        const Eigen::Vector4d q = z.head<4>();
-        for (const TranscribedCone& cone : setup_.cones) {
-          g[row++] = q.dot(cone.form * q) - cone.cosine_at_point[static_cast<std::size_t>(p)] * q.squaredNorm();
-        }
+      const Eigen::Vector4d q = z.head<4>();
+      for (const TranscribedCone& cone : setup_.cones) {
+        if (!imposed(cone, p)) continue;
+        g[row++] = q.dot(cone.form * q) - cone.cosine_at_point[static_cast<std::size_t>(p)] * q.squaredNorm();
       }
     }
     const Eigen::Vector3d terminal = terminal_ * point(x, points_ - 1).head<4>();
@@ -232,11 +230,10 @@ class SlewNlp final : public Ipopt::TNLP {
       const StateVector& m_p = mu[static_cast<std::size_t>(p)];
       PointHessian H = T * dynamics_.hessian(m_p);
       H.block<3, 3>(7, 7) += 2.0 * lambda[row++] * lie::Mat3::Identity();
-      if (cone_point(p)) {
-        for (const TranscribedCone& cone : setup_.cones) {
-          const double c = cone.cosine_at_point[static_cast<std::size_t>(p)];
-          H.block<4, 4>(0, 0) += 2.0 * lambda[row++] * (cone.form - c * Eigen::Matrix4d::Identity());
-        }
+      for (const TranscribedCone& cone : setup_.cones) {
+        if (!imposed(cone, p)) continue;
+        const double c = cone.cosine_at_point[static_cast<std::size_t>(p)];
+        H.block<4, 4>(0, 0) += 2.0 * lambda[row++] * (cone.form - c * Eigen::Matrix4d::Identity());
       }
       const Eigen::Matrix<double, 1, 10> t_row = m_p.transpose() * dynamics_.jacobian(z);
       for (int i = 0; i < 4; ++i) {
@@ -296,10 +293,17 @@ class SlewNlp final : public Ipopt::TNLP {
   [[nodiscard]] int defect_rows() const noexcept {
     return (hermite_simpson() ? 14 : 7) * setup_.intervals;
   }
-  /// Cones are imposed at every point but the two fixed ends (checked before the solve).
-  [[nodiscard]] bool cone_point(int p) const noexcept { return p > 0 && p < points_ - 1; }
+  /// A cone is imposed at every point but the two fixed ends (checked before the solve) where
+  /// its cosine is finite: −∞ leaves the point free of it (TranscribedCone).
+  [[nodiscard]] bool imposed(const TranscribedCone& cone, int p) const noexcept {
+    return p > 0 && p < points_ - 1 && std::isfinite(cone.cosine_at_point[static_cast<std::size_t>(p)]);
+  }
   [[nodiscard]] int constraints() const noexcept {
-    return defect_rows() + points_ + (points_ - 2) * static_cast<int>(setup_.cones.size()) + 3;
+    int cone_rows = 0;
+    for (const TranscribedCone& cone : setup_.cones) {
+      for (int p = 0; p < points_; ++p) cone_rows += imposed(cone, p) ? 1 : 0;
+    }
+    return defect_rows() + points_ + cone_rows + 3;
   }
   [[nodiscard]] static PointVector point(const Number* x, int p) noexcept {
     return Eigen::Map<const PointVector>(x + var(p));
@@ -350,14 +354,13 @@ class SlewNlp final : public Ipopt::TNLP {
       const PointVector z = point(x, p);
       for (int i = 7; i < 10; ++i) emit(row, var(p) + i, 2.0 * z(i));
       ++row;
-      if (cone_point(p)) {
-        const Eigen::Vector4d q = z.head<4>();
-        for (const TranscribedCone& cone : setup_.cones) {
-          const double c = cone.cosine_at_point[static_cast<std::size_t>(p)];
-          const Eigen::Vector4d grad = 2.0 * (cone.form * q - c * q);
-          for (int i = 0; i < 4; ++i) emit(row, var(p) + i, grad(i));
-          ++row;
-        }
+      const Eigen::Vector4d q = z.head<4>();
+      for (const TranscribedCone& cone : setup_.cones) {
+        if (!imposed(cone, p)) continue;
+        const double c = cone.cosine_at_point[static_cast<std::size_t>(p)];
+        const Eigen::Vector4d grad = 2.0 * (cone.form * q - c * q);
+        for (int i = 0; i < 4; ++i) emit(row, var(p) + i, grad(i));
+        ++row;
       }
     }
     for (int i = 0; i < 3; ++i) {
@@ -438,10 +441,10 @@ TranscriptionResult solve_transcription(const TranscriptionSetup& setup,
   app->Options()->SetStringValue("sb", "yes");
   app->Options()->SetIntegerValue("max_iter", setup.max_iterations);
   app->Options()->SetNumericValue("max_cpu_time", setup.max_seconds);
-  app->Options()->SetNumericValue("tol", 1e-9);
-  app->Options()->SetNumericValue("acceptable_tol", 1e-6);
-  app->Options()->SetNumericValue("constr_viol_tol", 1e-9);
-  app->Options()->SetNumericValue("acceptable_constr_viol_tol", 1e-7);
+  app->Options()->SetNumericValue("tol", setup.tolerance);
+  app->Options()->SetNumericValue("acceptable_tol", 1000.0 * setup.tolerance);
+  app->Options()->SetNumericValue("constr_viol_tol", setup.tolerance);
+  app->Options()->SetNumericValue("acceptable_constr_viol_tol", 100.0 * setup.tolerance);
   if (warm_startable(guess, *nlp)) {
     // From a solution of a program of the same structure (docs/slew-planner.md, "Speed"): its
     // multipliers, a small barrier parameter, the point hardly pushed from its bounds.

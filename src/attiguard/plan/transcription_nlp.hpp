@@ -23,7 +23,9 @@ namespace attiguard::plan {
 /// cosine the point must keep: qᵀ(M − c_p I)q ≥ 0 (docs/slew-planner.md, "Between the nodes").
 struct TranscribedCone {
   Eigen::Matrix4d form{Eigen::Matrix4d::Zero()};
-  std::vector<double> cosine_at_point;  ///< c_p for every point p
+  /// c_p for every point p; −∞ where the cone is not imposed (far from the path: the planner
+  /// prunes it, docs/slew-planner.md "Speed").
+  std::vector<double> cosine_at_point;
 };
 
 /// The scaled program (docs/slew-planner.md, "Transcription").
@@ -38,6 +40,9 @@ struct TranscriptionSetup {
   double max_duration{50.0};  ///< upper bound of T̄
   int max_iterations{800};
   double max_seconds{60.0};
+  /// IPOPT's tol and constr_viol_tol (the acceptable levels 1000× and 100× looser); the
+  /// screening's coarse solves use a looser one (docs/slew-planner.md, "Speed").
+  double tolerance{1e-9};
 };
 
 /// Number of transcription points: 2N + 1 (Hermite–Simpson: nodes and midpoints) or N + 1.

@@ -1,6 +1,7 @@
 // The slew planner (docs/slew-planner.md): the closed form, constrained problems, refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -96,6 +97,41 @@ TEST(SlewPlanner, RefusesWhenTheConesCloseEveryWay) {
           << e.what();
     }
   }
+}
+
+// A cone far (38 deg) from the eigenaxis path, which the planner therefore leaves out of the
+// program, but on the time-optimal path of this asymmetric body (found by planning without it):
+// the dense check must catch the plan near it, impose it again and return a plan that keeps it.
+TEST(SlewPlanner, AConeLeftOutFarFromTheGuessIsImposedWhenThePlanComesNear) {
+  SlewProblem p;
+  p.J_b = lie::Vec3(1.0, 2.0, 3.0).asDiagonal();
+  p.tau_max = 1.0;
+  p.torque_headroom = 0.0;
+  p.R_target = lie::exp(lie::Vec3(1.0, 0.0, 1.0).normalized() * 170.0 * kDeg);
+  const PlannedSlew free = plan_slew(p);
+  // Body +z on the free plan, at its largest angle from the eigenaxis path of body +z.
+  lie::Vec3 far_i = lie::Vec3::UnitZ();
+  double far_angle = 0.0;
+  for (int i = 0; i <= 400; ++i) {
+    const lie::Vec3 z_i = free.plan.evaluate(free.plan.duration() * i / 400.0).R_ib * lie::Vec3::UnitZ();
+    double nearest = std::numbers::pi;
+    for (int j = 0; j <= 400; ++j) {
+      const lie::Vec3 e_i = lie::exp(lie::Vec3(1.0, 0.0, 1.0).normalized() * 170.0 * kDeg * j / 400.0) *
+                            lie::Vec3::UnitZ();
+      nearest = std::min(nearest, std::acos(std::clamp(z_i.dot(e_i), -1.0, 1.0)));
+    }
+    if (nearest > far_angle) {
+      far_angle = nearest;
+      far_i = z_i;
+    }
+  }
+  ASSERT_GT(far_angle, 36.0 * kDeg);  // the cone below is left out of the first solve
+  p.cones.push_back(governor::keep_out_cone(lie::Vec3::UnitZ(), far_i, 5.0 * kDeg));
+  const PlannedSlew plan = plan_slew(p);
+  EXPECT_GE(plan.report.cones_reimposed, 1);
+  EXPECT_GE(plan.report.check.smallest_cone_margin, 0.0);
+  EXPECT_LE(plan.report.check.largest_torque_ratio, 1.0);
+  EXPECT_GT(plan.report.duration, free.report.duration);  // the cone costs time
 }
 
 }  // namespace

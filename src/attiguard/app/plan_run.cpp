@@ -67,7 +67,8 @@ nlohmann::json plan_summary(const sim::PetErgScenario& sc, const plan::SlewProbl
   j["solver"] = {{"name", "ipopt"},
                  {"status", r.solver_status},
                  {"iterations", r.iterations},
-                 {"solves", r.solves}};
+                 {"solves", r.solves},
+                 {"cones_reimposed", r.cones_reimposed}};
   j["planning_time"] = r.planning_seconds;
   return j;
 }

@@ -322,6 +322,7 @@ struct Refined {
   std::string failure;
   int solves{0};
   int iterations{0};
+  int reimposed{0};  ///< re-solves after a left-out cone was approached
 };
 
 Refined refine(const AttitudePath& path, const SlewProblem& problem, const PlannerOptions& options,
@@ -370,7 +371,10 @@ Refined refine(const AttitudePath& path, const SlewProblem& problem, const Plann
     const IntervalCheck check = check_intervals(out.plan, problem, options.dense_points_per_interval);
     out.check = check.overall;
     const Verdict verdict = judge(check, problem, stride, tightening, rows);
-    if (verdict == Verdict::pruned_too_much) continue;  // not a refinement: the same program
+    if (verdict == Verdict::pruned_too_much) {  // not a refinement: the same program
+      ++out.reimposed;
+      continue;
+    }
     if (verdict == Verdict::pass && check.overall.largest_torque_ratio <= torque_target) {
       out.ok = true;
       return out;
@@ -462,7 +466,7 @@ PlannedSlew plan_slew(const SlewProblem& problem, const PlannerOptions& options)
   for (std::size_t i = 0; i < n_ways; ++i) {
     intervals[i] = options.intervals > 0 ? options.intervals : derived_intervals(search.paths[i]);
   }
-  int solves = 0, iterations = 0;
+  int solves = 0, iterations = 0, reimposed = 0;
   const Screening screening = screen_ways(search.paths, intervals, problem, options);
   solves += screening.solves;
   iterations += screening.iterations;
@@ -480,6 +484,7 @@ PlannedSlew plan_slew(const SlewProblem& problem, const PlannerOptions& options)
       Refined r = refine(search.paths[i], problem, options, intervals[i], coarse);
       solves += r.solves;
       iterations += r.iterations;
+      reimposed += r.reimposed;
       if (!r.ok) {
         failures += (failures.empty() ? "" : "; ") + r.failure;
         continue;
@@ -503,6 +508,7 @@ PlannedSlew plan_slew(const SlewProblem& problem, const PlannerOptions& options)
   report.ways_tried = static_cast<int>(search.paths.size());
   report.solves = solves;
   report.iterations = iterations;
+  report.cones_reimposed = reimposed;
   report.roadmap_attitudes = search.attitudes;
   report.planning_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -43,6 +43,9 @@ struct PlanReport {
   int ways_tried{0};                  ///< initial paths refined
   int solves{0};                      ///< IPOPT solves in all
   int iterations{0};                  ///< IPOPT iterations in all
+  /// Solves repeated because the plan came near a cone left out of the program far from the
+  /// initial guess (docs/slew-planner.md, "Speed").
+  int cones_reimposed{0};
   std::string solver_status;          ///< the accepted solve's status
   double planning_seconds{0.0};       ///< wall time of plan_slew
   int roadmap_attitudes{0};           ///< attitudes of the roadmap

@@ -82,7 +82,8 @@ try {
           s.dispatchEvent(new Event('input', { bubbles: true }));
         }, frac * tEnd);
         const st = await page.evaluate(() => window.attiguardView.state());
-        const row = csv.rows.find((r) => Math.abs(r[it] - st.t) <= 1e-9 * Math.max(1, Math.abs(st.t)));
+        // The page's numbers have 9 significant digits (app/view_page.hpp): a relative 1e-8.
+        const row = csv.rows.find((r) => Math.abs(r[it] - st.t) <= 1e-8 * Math.max(1, Math.abs(st.t)));
         check(row !== undefined && Math.abs(st.t - frac * tEnd) <= tEnd / Math.max(1, st.rows_shown - 1),
           `${tag}: slider to t = ${(frac * tEnd).toFixed(3)} s shows the trajectory row t = ${st.t}`);
         if (row) {

@@ -26,16 +26,19 @@
 #include <vector>
 
 #include "attiguard/control/quaternion_pid.hpp"
+#include "attiguard/control/so3_tracking.hpp"
 #include "attiguard/control/torque_quantizer.hpp"
 #include "attiguard/dynamics/attitude_sensor.hpp"
 #include "attiguard/dynamics/disturbance_torque.hpp"
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/spacecraft_plant.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/progress_governor.hpp"
 #include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/lie/axis_angle.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/plan/slew_planner.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
@@ -405,6 +408,42 @@ TEST(AllocationFree, QuaternionPidStepTrackingATurn) {
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
                                      << " calls of QuaternionPid::step";
+}
+
+// The planned slew's flight-loop parts (docs/pet-erg.md, section 16): the progress governor's
+// rate at each sampling instant and the tracking law at each control step, flying a plan of a
+// 120 deg slew around a keep-out cone with the plan's clock governed. Set-up (the plan, the
+// governor's tables) is outside the counted window.
+TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
+  plan::SlewProblem p;
+  p.J_b = Vec3(2.4, 3.1, 3.9).asDiagonal();
+  p.tau_max = 1.0;
+  p.torque_headroom = 0.1;
+  p.cone_margin = 4.0 * std::numbers::pi / 180.0;
+  p.R_target = lie::exp(Vec3(0.0, 1.0, 0.0) * (120.0 * std::numbers::pi / 180.0));
+  const Vec3 sun = lie::exp(Vec3(0.0, 1.0, 0.0) * (60.0 * std::numbers::pi / 180.0)) * Vec3::UnitZ();
+  p.cones.push_back(governor::keep_out_cone(Vec3::UnitZ(), sun, 25.0 * std::numbers::pi / 180.0));
+  const plan::PlannedSlew planned = plan::plan_slew(p);
+  const control::TrackingGains gains{0.5, 1.5};
+  const double dt = 0.01;
+  const int per_sample = 10;
+  const governor::ProgressGovernor progress(planned.plan, p.cones, p.tau_max, gains, per_sample * dt, 0.05);
+  const dynamics::RigidBody body(p.J_b);
+  Mat3 R_ib = Mat3::Identity();
+  Vec3 omega_b = Vec3::Zero();
+  double sigma = 0.0, rate = 0.0;
+  g_allocations = 0;
+  for (int k = 0; k < kCalls; ++k) {
+    if (k % per_sample == 0) rate = counted([&] { return progress.choose_rate(sigma, R_ib, omega_b); });
+    const Vec3 tau_b = counted([&] {
+      return control::tracking_torque(p.J_b, R_ib, omega_b, progress.reference(sigma, rate), gains);
+    });
+    propagate_attitude(body, tau_b, dt, R_ib, omega_b);
+    sigma = std::min(planned.plan.duration(), sigma + rate * dt);
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
+                                     << " steps of the tracking law and the progress governor";
+  EXPECT_GT(sigma, 0.0);  // the clock moved
 }
 
 /// Plant (2)-(5) of the waypoint paper over one control period dt, Lie-Euler in 10 substeps,

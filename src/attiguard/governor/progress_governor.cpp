@@ -146,6 +146,9 @@ double ProgressGovernor::torque_threshold(double rate, const PlanWindow& w) cons
 
 control::TrackingReference ProgressGovernor::reference(double sigma, double rate) const noexcept {
   const SlewPlanSample s = plan_.evaluate(sigma);
+  // At the plan's end the reference is R_d at rest: no rate, no acceleration (the hold); the
+  // plan's last ω̇ (its final braking) would otherwise be fed forward for ever.
+  if (sigma >= plan_.duration()) return control::TrackingReference{s.R_ib, lie::Vec3::Zero(), lie::Vec3::Zero()};
   return control::TrackingReference{s.R_ib, rate * s.omega_b, rate * rate * s.omega_dot_b};
 }
 

@@ -57,7 +57,8 @@ class ProgressGovernor {
   [[nodiscard]] double choose_rate(double sigma, const lie::Mat3& R_ib,
                                    const lie::Vec3& omega_b) const noexcept;
 
-  /// The tracking reference at plan time σ flown at the rate ṡ: R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ).
+  /// The tracking reference at plan time σ flown at the rate ṡ: R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ);
+  /// at σ ≥ T_p, R_d at rest (the hold).
   [[nodiscard]] control::TrackingReference reference(double sigma, double rate) const noexcept;
 
  private:

@@ -9,6 +9,8 @@
 // around each call), so GoogleTest and the plant propagation in between may allocate. The
 // flight layers use fixed-size Eigen types only, which never call malloc, so counting operator
 // new covers every standard container, std::function, std::string and exception object.
+// The same replaced operators inject an out-of-memory failure (AllocationFailure.*): the one
+// place in the suite where std::bad_alloc can be made to happen at a chosen allocation.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +40,7 @@
 #include "attiguard/lie/axis_angle.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/lie/so3.hpp"
+#include "attiguard/parallel/worker_pool.hpp"
 #include "attiguard/plan/slew_planner.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
@@ -50,6 +53,9 @@ namespace {
 
 std::atomic<bool> g_counting{false};
 std::atomic<long> g_allocations{0};
+/// Out-of-memory injection (AllocationFailure.*): when > 0, counts down on every throwing
+/// allocation of any thread, and the allocation that brings it to 0 throws std::bad_alloc.
+std::atomic<long> g_fail_countdown{0};
 
 void* counted_alloc(std::size_t size, std::size_t align) {
   if (g_counting.load(std::memory_order_relaxed)) {
@@ -63,6 +69,10 @@ void* counted_alloc(std::size_t size, std::size_t align) {
 }
 
 void* counted_alloc_or_throw(std::size_t size, std::size_t align) {
+  if (g_fail_countdown.load(std::memory_order_relaxed) > 0 &&
+      g_fail_countdown.fetch_sub(1, std::memory_order_relaxed) == 1) {
+    throw std::bad_alloc();
+  }
   void* p = counted_alloc(size, align);
   if (p == nullptr) {
     throw std::bad_alloc();
@@ -444,6 +454,30 @@ TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
                                      << " steps of the tracking law and the progress governor";
   EXPECT_GT(sigma, 0.0);  // the clock moved
+}
+
+// Issue 49, item 7: a worker thread whose state cannot be allocated (std::bad_alloc inside
+// std::thread's constructor, as under `ulimit -v`) is the same ThreadStartError as a thread the
+// system refuses — threads already made are released without work and joined — never a
+// std::bad_alloc escaping as exit 3. The third allocation of run_workers (after the pool and the
+// first thread's state) fails here.
+TEST(AllocationFailure, AWorkerThreadThatCannotBeAllocatedIsAThreadStartError) {
+  std::atomic<int> bodies{0};
+  g_fail_countdown = 3;
+  try {
+    parallel::run_workers(4, [&](long) { ++bodies; });
+    g_fail_countdown = 0;
+    FAIL() << "no ThreadStartError";
+  } catch (const parallel::ThreadStartError& e) {
+    g_fail_countdown = 0;
+    EXPECT_EQ(e.started(), 1);
+    EXPECT_EQ(e.wanted(), 4);
+    EXPECT_NE(std::string(e.what()).find("out of memory"), std::string::npos) << e.what();
+  } catch (const std::bad_alloc&) {
+    g_fail_countdown = 0;
+    FAIL() << "std::bad_alloc escaped run_workers";
+  }
+  EXPECT_EQ(bodies.load(), 0);  // released without work
 }
 
 /// Plant (2)-(5) of the waypoint paper over one control period dt, Lie-Euler in 10 substeps,

@@ -35,14 +35,19 @@ struct TrackingError {
   Vec3 e_Omega{Vec3::Zero()};
 };
 
-/// e_R and e_Ω of the body (R, ω) against the reference (docs/pet-erg.md, section 16).
-[[nodiscard]] inline TrackingError tracking_error(const Mat3& R_ib, const Vec3& omega_b,
-                                                  const TrackingReference& ref) noexcept {
-  const Mat3 R_e = R_ib.transpose() * ref.R_ib;  // Rᵀ R_d
+/// e_R and e_Ω from R_e = Rᵀ R_d (docs/pet-erg.md, section 16).
+[[nodiscard]] inline TrackingError tracking_error_of(const Mat3& R_e, const Vec3& omega_b,
+                                                     const TrackingReference& ref) noexcept {
   TrackingError e;
   e.e_R = -lie::vee(lie::sk(R_e));  // ½(R_dᵀR − RᵀR_d)^∨ = −sk(RᵀR_d)^∨
   e.e_Omega = omega_b - R_e * ref.omega_b;
   return e;
+}
+
+/// e_R and e_Ω of the body (R, ω) against the reference (docs/pet-erg.md, section 16).
+[[nodiscard]] inline TrackingError tracking_error(const Mat3& R_ib, const Vec3& omega_b,
+                                                  const TrackingReference& ref) noexcept {
+  return tracking_error_of(R_ib.transpose() * ref.R_ib, omega_b, ref);
 }
 
 /// τ = −k_R e_R − k_Ω e_Ω + ω × Jω − J(ω̂ RᵀR_d ω_d − RᵀR_d ω̇_d) (docs/pet-erg.md, section
@@ -53,7 +58,7 @@ struct TrackingError {
                                           const TrackingReference& ref,
                                           const TrackingGains& gains) noexcept {
   const Mat3 R_e = R_ib.transpose() * ref.R_ib;
-  const TrackingError e = tracking_error(R_ib, omega_b, ref);
+  const TrackingError e = tracking_error_of(R_e, omega_b, ref);
   const Vec3 omega_d_in_b = R_e * ref.omega_b;
   const Vec3 feedforward =
       omega_b.cross(J_b * omega_b) - J_b * (omega_b.cross(omega_d_in_b) - R_e * ref.omega_dot_b);
@@ -66,8 +71,9 @@ struct TrackingError {
 [[nodiscard]] inline double tracking_lyapunov(const Mat3& J_b, const Mat3& R_ib,
                                               const Vec3& omega_b, const TrackingReference& ref,
                                               const TrackingGains& gains) noexcept {
-  const TrackingError e = tracking_error(R_ib, omega_b, ref);
-  return 0.5 * e.e_Omega.dot(J_b * e.e_Omega) + gains.k_R * lie::phi(R_ib.transpose() * ref.R_ib);
+  const Mat3 R_e = R_ib.transpose() * ref.R_ib;
+  const TrackingError e = tracking_error_of(R_e, omega_b, ref);
+  return 0.5 * e.e_Omega.dot(J_b * e.e_Omega) + gains.k_R * lie::phi(R_e);
 }
 
 }  // namespace attiguard::control

@@ -144,21 +144,30 @@ double ProgressGovernor::torque_threshold(double rate, const PlanWindow& w) cons
   return lo;
 }
 
-control::TrackingReference ProgressGovernor::reference(double sigma, double rate) const noexcept {
-  const SlewPlanSample s = plan_.evaluate(sigma);
-  // At the plan's end the reference is R_d at rest: no rate, no acceleration (the hold); the
-  // plan's last ω̇ (its final braking) would otherwise be fed forward for ever.
-  if (sigma >= plan_.duration()) return control::TrackingReference{s.R_ib, lie::Vec3::Zero(), lie::Vec3::Zero()};
+namespace {
+
+/// The plan's sample at σ flown at the rate ṡ: R_p, ṡ ω_p, ṡ² ω̇_p; at σ ≥ T_p, R_d at rest (the
+/// hold): the plan's last ω̇ (its final braking) would otherwise be fed forward for ever.
+control::TrackingReference scaled(const SlewPlanSample& s, bool at_end, double rate) noexcept {
+  if (at_end) return control::TrackingReference{s.R_ib, lie::Vec3::Zero(), lie::Vec3::Zero()};
   return control::TrackingReference{s.R_ib, rate * s.omega_b, rate * rate * s.omega_dot_b};
+}
+
+}  // namespace
+
+control::TrackingReference ProgressGovernor::reference(double sigma, double rate) const noexcept {
+  return scaled(plan_.evaluate(sigma), sigma >= plan_.duration(), rate);
 }
 
 double ProgressGovernor::choose_rate(double sigma, const lie::Mat3& R_ib,
                                      const lie::Vec3& omega_b) const noexcept {
+  const SlewPlanSample s = plan_.evaluate(sigma);  // once: only the rate changes below
+  const bool at_end = sigma >= plan_.duration();
   for (int i = kRateSteps; i >= 1; --i) {
     const double rate = static_cast<double>(i) / kRateSteps;
     const PlanWindow w = window(sigma, sigma + rate * sample_period_);
     const double gamma = std::min(cone_threshold(w), torque_threshold(rate, w));
-    const double V = control::tracking_lyapunov(J_b_, R_ib, omega_b, reference(sigma, rate), gains_);
+    const double V = control::tracking_lyapunov(J_b_, R_ib, omega_b, scaled(s, at_end, rate), gains_);
     if (V <= (1.0 - epsilon_) * gamma) return rate;
   }
   return 0.0;

@@ -248,9 +248,9 @@ using ConeRows = std::vector<std::vector<bool>>;
 /// finds the plan near them.
 ConeRows far_from_guess(const TranscriptionValues& guess, const SlewProblem& problem, int points) {
   ConeRows rows(problem.cones.size(), std::vector<bool>(static_cast<std::size_t>(points), true));
-  for (std::size_t c = 0; c < problem.cones.size(); ++c) {
-    for (int p = 0; p < points; ++p) {
-      const lie::Mat3 R = lie::quat_to_rotation(guess.points[static_cast<std::size_t>(p)].head<4>().normalized());
+  for (int p = 0; p < points; ++p) {
+    const lie::Mat3 R = lie::quat_to_rotation(guess.points[static_cast<std::size_t>(p)].head<4>().normalized());
+    for (std::size_t c = 0; c < problem.cones.size(); ++c) {
       const double margin = cone_angle_margin(problem.cones[c], R) - problem.cone_margin;
       rows[c][static_cast<std::size_t>(p)] = margin < kPruneAngle;
     }

@@ -19,6 +19,7 @@
 #include "attiguard/scenario/read_waypoint.hpp"
 #include "attiguard/sim/mission_run.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/planned_run.hpp"
 #include "attiguard/sim/derived_values_json.hpp"
 #include "attiguard/sim/rigid_body_run.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
@@ -79,7 +80,10 @@ nlohmann::json run_with_sink(const RunOptions& options,
 /// `check`'s report of a pet_erg scenario: its governor values, given or derived from the craft
 /// (docs/pet-erg.md, section 8).
 std::string pet_erg_check_report(const Document& doc) {
-  return sim::derived_values_report(sim::governor_values(scenario::parse_pet_erg(doc)));
+  const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
+  // The planned mode plans at set-up: `check` plans and reports what the run would fly with.
+  if (sc.params.mode == governor::GovernorMode::planned) return sim::planned_report(sim::planned_setup(sc));
+  return sim::derived_values_report(sim::governor_values(sc));
 }
 
 /// `check`'s report of a waypoint scenario: the mission prediction (docs/waypoint.md, "Prediction").

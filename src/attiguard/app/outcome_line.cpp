@@ -128,6 +128,18 @@ std::string tie_break_detail(const json& summary) {
 
 }  // namespace
 
+/// governor = "planned": the convergence against the plan's duration and how long the clock
+/// was held (docs/pet-erg.md, section 16.2).
+void planned_parts(Line& line, const json& summary) {
+  const auto it = summary.find("planned");
+  if (it == summary.end() || !it->is_object()) return;
+  const auto over = number(*it, "convergence_time_over_plan");
+  const auto plan = it->find("plan");
+  const auto T_p = plan != it->end() ? number(*plan, "duration") : std::nullopt;
+  if (over && T_p) line.part(fig(*over) + "x the plan's " + fig(*T_p) + " s");
+  line.part("clock held", number(*it, "time_held"), "s");
+}
+
 std::string pet_erg_outcome_line(const json& summary) {
   const std::string word = text(summary, "outcome", "unknown");
   Line line(word);
@@ -139,6 +151,7 @@ std::string pet_erg_outcome_line(const json& summary) {
     std::string t = "at " + fig(*t_conv) + " s";
     if (ratio && t_bb) t += " = " + fig(*ratio) + "x the eigenaxis bang-bang time " + fig(*t_bb) + " s";
     line.part(t);
+    planned_parts(line, summary);
   } else if (const auto d = number(summary, "duration")) {
     line.part("not converged by " + fig(*d) + " s");
   }

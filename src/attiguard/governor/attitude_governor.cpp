@@ -37,6 +37,8 @@ double GovernorOutput::min_margin() const noexcept {
 AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
                                    std::span<const ConeConstraint> cones)
     : params_(params) {
+  require(params.mode != GovernorMode::planned,
+          "mode planned is flown by PlannedGovernor (planned_governor.hpp), not AttitudeGovernor");
   require(positive_finite(params.gains.kp) && positive_finite(params.gains.kd),
           "kp and kd must be positive and finite");
   require(positive_finite(params.tau_max), "tau_max must be positive and finite");
@@ -152,6 +154,7 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
       out.trigger = true;
       break;
     case GovernorMode::none:
+    case GovernorMode::planned:  // refused by the constructor
       out.trigger = false;
       break;
   }

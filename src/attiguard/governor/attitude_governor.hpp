@@ -32,12 +32,18 @@ enum class GovernorMode {
   pet,         ///< periodic event-triggered ERG, [PET-ERG eqs. (5)-(6)]
   continuous,  ///< continuous-time ERG, [PET-ERG eq. (4)]
   none,        ///< no governor: the PD law [PET-ERG eq. (3)] tracks R_d directly (constraints not enforced)
+  /// a planned slew flown by the tracking law under the progress governor (docs/pet-erg.md,
+  /// section 16.2; planned_governor.hpp): not an AttitudeGovernor mode (its constructor refuses it)
+  planned,
 };
 
 /// Names of GovernorMode in scenario files (`governor = "pet"`), summaries and the Python
 /// bindings (docs/scenario-format.md, "pet_erg").
-inline constexpr NameTable<GovernorMode, 3> kGovernorModeNames{
-    {{{GovernorMode::pet, "pet"}, {GovernorMode::continuous, "continuous"}, {GovernorMode::none, "none"}}}};
+inline constexpr NameTable<GovernorMode, 4> kGovernorModeNames{
+    {{{GovernorMode::pet, "pet"},
+      {GovernorMode::continuous, "continuous"},
+      {GovernorMode::none, "none"},
+      {GovernorMode::planned, "planned"}}}};
 
 /// Parameters of the PD law [PET-ERG eq. (3)] and the governor (PET-ERG paper, Secs. III–V).
 struct GovernorParams {

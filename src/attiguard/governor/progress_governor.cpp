@@ -23,6 +23,10 @@ double angle_margin(const ConeConstraint& cone, const lie::Mat3& R_ib) noexcept 
 constexpr int kRateSteps = 32;
 /// Cells of the split of Γ between the attitude and the rate error in the torque bound.
 constexpr int kSplitCells = 16;
+/// a = kClockAccelerationPlans / T_p: the clock stops from ṡ = 1 within a quarter of the plan.
+constexpr double kClockAccelerationPlans = 4.0;
+/// Braking candidates −a, −a/2, …, −a/2^(kBrakeSteps−1).
+constexpr int kBrakeSteps = 6;
 /// Bisection steps of Γ_d (relative resolution 2⁻⁶⁰ of 2 k_R).
 constexpr int kBisections = 60;
 
@@ -39,6 +43,7 @@ ProgressGovernor::ProgressGovernor(const SlewPlan& plan, std::span<const ConeCon
     throw SetupError("progress governor: tau_max, the gains and the sampling period must be > 0, "
                      "epsilon in [0, 1), at least 2 points per interval");
   }
+  accel_max_ = kClockAccelerationPlans / plan.duration();
   const Eigen::SelfAdjointEigenSolver<lie::Mat3> eig(J_b_);
   lambda_min_ = eig.eigenvalues().minCoeff();
   lambda_max_ = eig.eigenvalues().maxCoeff();
@@ -51,7 +56,7 @@ ProgressGovernor::ProgressGovernor(const SlewPlan& plan, std::span<const ConeCon
     // interpolants are cubic in t, so between two samples they leave the samples' range by less
     // than that change once the samples are dense (the assumption of these tables).
     IntervalExtremes e{0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
-    double d_omega = 0.0, d_omega_dot = 0.0, d_tau = 0.0, d_margin = 0.0;
+    double d_omega = 0.0, d_omega_dot = 0.0, d_margin = 0.0;
     SlewPlanSample prev = plan.evaluate_in(k, ta);
     double prev_margin = std::numeric_limits<double>::infinity();
     for (const ConeConstraint& c : cones) prev_margin = std::min(prev_margin, angle_margin(c, prev.R_ib));
@@ -65,30 +70,48 @@ ProgressGovernor::ProgressGovernor(const SlewPlan& plan, std::span<const ConeCon
       e.cone_margin_min = std::min(e.cone_margin_min, margin);
       d_omega = std::max(d_omega, std::abs(s.omega_b.norm() - prev.omega_b.norm()));
       d_omega_dot = std::max(d_omega_dot, std::abs(s.omega_dot_b.norm() - prev.omega_dot_b.norm()));
-      d_tau = std::max(d_tau, std::abs(s.tau_b.norm() - prev.tau_b.norm()));
       if (std::isfinite(margin)) d_margin = std::max(d_margin, std::abs(margin - prev_margin));
       prev = s;
       prev_margin = margin;
     }
     e.omega_max += d_omega;
     e.omega_dot_max += d_omega_dot;
-    e.tau_max += d_tau;
+    // The torque is linear between the node, the midpoint and the next node, and a norm is
+    // convex along a segment: its largest value is at one of the three, exactly.
+    e.tau_max = std::max({nodes[static_cast<std::size_t>(k)].tau_b.norm(),
+                          plan.midpoint_torques()[static_cast<std::size_t>(k)].norm(),
+                          nodes[static_cast<std::size_t>(k + 1)].tau_b.norm()});
     e.cone_margin_min -= d_margin;
     extremes_.push_back(e);
   }
+  suffix_ = extremes_;
+  for (int k = plan.intervals() - 2; k >= 0; --k) {
+    IntervalExtremes& e = suffix_[static_cast<std::size_t>(k)];
+    const IntervalExtremes& next = suffix_[static_cast<std::size_t>(k + 1)];
+    e.omega_max = std::max(e.omega_max, next.omega_max);
+    e.omega_dot_max = std::max(e.omega_dot_max, next.omega_dot_max);
+    e.tau_max = std::max(e.tau_max, next.tau_max);
+    e.cone_margin_min = std::min(e.cone_margin_min, next.cone_margin_min);
+  }
+}
+
+int ProgressGovernor::interval_of(double t) const noexcept {
+  const auto nodes = plan_.nodes();
+  const auto it = std::upper_bound(nodes.begin(), nodes.end(), t,
+                                   [](double v, const SlewPlanNode& n) { return v < n.t; });
+  const auto k = static_cast<int>(it - nodes.begin()) - 1;
+  return std::clamp(k, 0, plan_.intervals() - 1);
+}
+
+PlanWindow ProgressGovernor::ahead(double sigma) const noexcept {
+  const IntervalExtremes& e = suffix_[static_cast<std::size_t>(interval_of(sigma))];
+  return PlanWindow{e.omega_max, e.omega_dot_max, e.tau_max, e.cone_margin_min};
 }
 
 PlanWindow ProgressGovernor::window(double from, double to) const noexcept {
-  const auto nodes = plan_.nodes();
   const double T = plan_.duration();
   from = std::clamp(from, 0.0, T);
   to = std::clamp(std::max(from, to), 0.0, T);
-  const auto interval_of = [&](double t) {
-    const auto it = std::upper_bound(nodes.begin(), nodes.end(), t,
-                                     [](double v, const SlewPlanNode& n) { return v < n.t; });
-    const auto k = static_cast<int>(it - nodes.begin()) - 1;
-    return std::clamp(k, 0, plan_.intervals() - 1);
-  };
   PlanWindow w{0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
   for (int k = interval_of(from); k <= interval_of(to); ++k) {
     const IntervalExtremes& e = extremes_[static_cast<std::size_t>(k)];
@@ -107,18 +130,23 @@ double ProgressGovernor::cone_threshold(const PlanWindow& w) const noexcept {
   return gains_.k_R * (1.0 - std::cos(m));
 }
 
-double ProgressGovernor::torque_bound(double gamma, double rate, const PlanWindow& w) const noexcept {
+double ProgressGovernor::torque_bound(double gamma, double rate, const PlanWindow& w,
+                                      double accel) const noexcept {
   // V = ½ e_Ωᵀ J e_Ω + k_R φ ≤ Γ splits Γ between the attitude error (f Γ) and the rate error
   // ((1 − f) Γ). The terms in θ grow with f, those in E fall with f: over a cell [f_i, f_{i+1}]
   // the bound is at most the θ terms at f_{i+1} plus the E terms at f_i, and the largest of
   // those over kSplitCells cells bounds every split (docs/pet-erg.md, section 16.1, "Torque").
+  // With the clock's acceleration s̈ the reference's ω̇_d = ṡ² ω̇_p + s̈ ω_p and its torque
+  // ṡ² τ_p + s̈ J ω_p: ‖ω̇_d‖ ≤ ṡ²‖ω̇_p‖ + |s̈|‖ω_p‖, ‖·‖ ≤ ṡ²‖τ_p‖ + |s̈| λ_max ‖ω_p‖.
   gamma = std::max(0.0, gamma);
   const double s2 = rate * rate;
+  const double a = std::abs(accel);
   const auto attitude_terms = [&](double f) {
     const double theta = std::acos(std::max(-1.0, 1.0 - f * gamma / gains_.k_R));
     const double sin_bound = theta < 0.5 * std::numbers::pi ? std::sin(theta) : 1.0;
     return gains_.k_R * sin_bound +
-           theta * (lambda_max_ - lambda_min_) * s2 * (w.omega_max * w.omega_max + w.omega_dot_max);
+           theta * (lambda_max_ - lambda_min_) *
+               (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
   };
   const auto rate_terms = [&](double f) {
     const double E = std::sqrt(2.0 * (1.0 - f) * gamma / lambda_min_);
@@ -130,7 +158,7 @@ double ProgressGovernor::torque_bound(double gamma, double rate, const PlanWindo
     const double f1 = static_cast<double>(i + 1) / kSplitCells;
     worst = std::max(worst, attitude_terms(f1) + rate_terms(f0));
   }
-  return worst + s2 * w.tau_max;
+  return worst + s2 * w.tau_max + a * lambda_max_ * w.omega_max;
 }
 
 double ProgressGovernor::torque_threshold(double rate, const PlanWindow& w) const noexcept {
@@ -148,29 +176,93 @@ namespace {
 
 /// The plan's sample at σ flown at the rate ṡ: R_p, ṡ ω_p, ṡ² ω̇_p; at σ ≥ T_p, R_d at rest (the
 /// hold): the plan's last ω̇ (its final braking) would otherwise be fed forward for ever.
-control::TrackingReference scaled(const SlewPlanSample& s, bool at_end, double rate) noexcept {
+control::TrackingReference scaled(const SlewPlanSample& s, bool at_end, double rate,
+                                  double accel) noexcept {
   if (at_end) return control::TrackingReference{s.R_ib, lie::Vec3::Zero(), lie::Vec3::Zero()};
-  return control::TrackingReference{s.R_ib, rate * s.omega_b, rate * rate * s.omega_dot_b};
+  return control::TrackingReference{s.R_ib, rate * s.omega_b,
+                                    rate * rate * s.omega_dot_b + accel * s.omega_b};
 }
 
 }  // namespace
 
-control::TrackingReference ProgressGovernor::reference(double sigma, double rate) const noexcept {
-  return scaled(plan_.evaluate(sigma), sigma >= plan_.duration(), rate);
+control::TrackingReference ProgressGovernor::reference(double sigma, double rate,
+                                                       double accel) const noexcept {
+  return scaled(plan_.evaluate(sigma), sigma >= plan_.duration(), rate, accel);
 }
 
-double ProgressGovernor::choose_rate(double sigma, const lie::Mat3& R_ib,
-                                     const lie::Vec3& omega_b) const noexcept {
-  const SlewPlanSample s = plan_.evaluate(sigma);  // once: only the rate changes below
+RateChoice ProgressGovernor::choose(double sigma, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
+                                   double rate) const noexcept {
+  // V(ṡ) = ½(ω − ṡ v)ᵀJ(ω − ṡ v) + k_R φ(R_e), v = R_e ω_p(σ): R_e, v and φ once for every
+  // candidate (docs/pet-erg.md, section 16.1, "Choice of ṡ").
+  const SlewPlanSample s = plan_.evaluate(sigma);
   const bool at_end = sigma >= plan_.duration();
-  for (int i = kRateSteps; i >= 1; --i) {
-    const double rate = static_cast<double>(i) / kRateSteps;
-    const PlanWindow w = window(sigma, sigma + rate * sample_period_);
-    const double gamma = std::min(cone_threshold(w), torque_threshold(rate, w));
-    const double V = control::tracking_lyapunov(J_b_, R_ib, omega_b, scaled(s, at_end, rate), gains_);
-    if (V <= (1.0 - epsilon_) * gamma) return rate;
+  rate = std::clamp(rate, 0.0, 1.0);
+  const lie::Mat3 R_e = R_ib.transpose() * s.R_ib;
+  const lie::Vec3 v = at_end ? lie::Vec3::Zero() : lie::Vec3(R_e * s.omega_b);
+  const double attitude_part = gains_.k_R * lie::phi(R_e);
+  const auto level = [&](double r) {
+    const lie::Vec3 e = omega_b - r * v;
+    return 0.5 * e.dot(J_b_ * e) + attitude_part;
+  };
+  const PlanWindow w = ahead(sigma);
+  const double keep = 1.0 - epsilon_;
+  RateChoice c;
+  c.gamma_g = cone_threshold(w);
+  // Admissible: V ≤ (1 − ε)Γ_g and the bound of {V ≤ V/(1 − ε)} at the period's largest rate.
+  const auto holds = [&](double V, double top_rate, double accel) {
+    c.V = V;
+    c.torque_bound = torque_bound(V / keep, top_rate, w, accel);
+    return V <= keep * c.gamma_g && c.torque_bound <= tau_max_;
+  };
+  const double V_now = level(rate);
+  if (at_end) {  // the hold: the reference at rest, the rate no longer matters
+    c.rate = rate;
+    c.admissible = holds(V_now, 0.0, 0.0);
+    return c;
   }
-  return 0.0;
+  for (int i = kRateSteps; i >= 1 && static_cast<double>(i) / kRateSteps > rate; --i) {
+    const double r = static_cast<double>(i) / kRateSteps;
+    if (holds(level(r), r, 0.0)) {
+      c.rate = r;
+      c.rule = RateRule::jump;
+      c.admissible = true;
+      return c;
+    }
+  }
+  c.rate = rate;
+  if (rate < 1.0 && holds(V_now, std::min(1.0, rate + accel_max_ * sample_period_), accel_max_)) {
+    c.accel = accel_max_;
+    c.rule = RateRule::accelerate;
+    c.admissible = true;
+    return c;
+  }
+  if (holds(V_now, rate, 0.0)) {
+    c.rule = RateRule::coast;
+    c.admissible = true;
+    return c;
+  }
+  c.rule = RateRule::brake;
+  if (rate > 0.0) c.accel = brake_acceleration(sigma, R_ib, omega_b, rate);
+  return c;
+}
+
+double ProgressGovernor::brake_acceleration(double sigma, const lie::Mat3& R_ib,
+                                            const lie::Vec3& omega_b, double rate) const noexcept {
+  // The candidate whose tracking torque now is the smallest, the strongest braking on a tie:
+  // braking the clock lowers the torque while the plan accelerates and raises it while the plan
+  // brakes, where the clock coasts.
+  double best = 0.0;
+  double best_torque = control::tracking_torque(J_b_, R_ib, omega_b, reference(sigma, rate, 0.0), gains_).norm();
+  for (int i = kBrakeSteps - 1; i >= 0; --i) {
+    const double accel = -accel_max_ / static_cast<double>(1 << i);
+    const double torque =
+        control::tracking_torque(J_b_, R_ib, omega_b, reference(sigma, rate, accel), gains_).norm();
+    if (torque <= best_torque) {
+      best_torque = torque;
+      best = accel;
+    }
+  }
+  return best;
 }
 
 }  // namespace attiguard::governor

@@ -25,6 +25,27 @@ struct PlanWindow {
   double cone_margin_min{0.0}; ///< min over cones of θ_c − ∠(a_c, R_p a_b) [rad]
 };
 
+/// How ṡ was chosen (docs/pet-erg.md, section 16.1, "Choice of ṡ").
+enum class RateRule {
+  jump,        ///< a faster rate at once (V⁺ exact)
+  accelerate,  ///< s̈ = +a over the period
+  coast,       ///< s̈ = 0
+  brake,       ///< no rule admissible: s̈ < 0 as hard as the torque allows now (best effort)
+};
+
+/// The rate chosen at a sampling instant and the figures it was chosen on (docs/pet-erg.md,
+/// section 16.1, "Choice of ṡ").
+struct RateChoice {
+  double rate{0.0};          ///< ṡ ∈ [0, 1] at the instant
+  double accel{0.0};         ///< s̈ [1/s] held to the next instant (ṡ kept within [0, 1])
+  double V{0.0};             ///< V⁺(ṡ): the tracking law's V against the reference at ṡ
+  double gamma_g{0.0};       ///< Γ_g over the plan ahead
+  double torque_bound{0.0};  ///< bound on ‖τ‖ over {V ≤ V⁺/(1 − ε)} at ṡ, s̈ [N·m]
+  RateRule rule{RateRule::coast};
+  bool admissible{false};    ///< V⁺ ≤ (1 − ε)Γ_g and torque_bound ≤ τ_max
+};
+
+
 /// The progress governor of a plan (docs/pet-erg.md, section 16.1).
 class ProgressGovernor {
  public:
@@ -48,18 +69,52 @@ class ProgressGovernor {
   /// (docs/pet-erg.md, section 16.1, "Torque"); 0 when even Γ = 0 does not.
   [[nodiscard]] double torque_threshold(double rate, const PlanWindow& w) const noexcept;
 
-  /// The bound on ‖τ‖ over the level set {V ≤ Γ} at the rate ṡ (docs/pet-erg.md, section 16.1).
-  [[nodiscard]] double torque_bound(double gamma, double rate, const PlanWindow& w) const noexcept;
+  /// The bound on ‖τ‖ over the level set {V ≤ Γ} at the rate ṡ and the clock's acceleration s̈
+  /// (docs/pet-erg.md, section 16.1, "Torque").
+  [[nodiscard]] double torque_bound(double gamma, double rate, const PlanWindow& w,
+                                    double accel = 0.0) const noexcept;
 
-  /// The rate ṡ ∈ [0, 1] at a sampling instant, at plan time σ, for the body (R, ω): the largest
-  /// of 0, 1/32, …, 1 with V⁺(ṡ) ≤ (1 − ε) min{Γ_g, Γ_d(ṡ)} over the window the period reaches;
-  /// 0 when none is (docs/pet-erg.md, section 16.1, "Choice of ṡ").
+  /// a: the largest |s̈| of the clock [1/s], 4/T_p (docs/pet-erg.md, section 16.1).
+  [[nodiscard]] double clock_acceleration() const noexcept { return accel_max_; }
+
+  /// The plan's extremes over everything ahead of σ, [σ, T_p] (docs/pet-erg.md, section 16.1,
+  /// "Choice of ṡ"): a table look-up; the thresholds of it do not fall as σ grows.
+  [[nodiscard]] PlanWindow ahead(double sigma) const noexcept;
+
+  /// The clock's rate and acceleration at a sampling instant, at plan time σ, for the body
+  /// (R, ω), the clock running at ṡ = `rate` (docs/pet-erg.md, section 16.1, "Choice of ṡ"),
+  /// every rule checked over the plan ahead of σ with V ≤ (1 − ε)Γ_g and the torque bound of
+  /// {V ≤ V/(1 − ε)} within τ_max, the first that holds:
+  ///   jump: the fastest of 1, 31/32, … above ṡ whose V⁺ (exact, with the jump) holds;
+  ///   accelerate: s̈ = a with the bound at min(1, ṡ + a T_s);
+  ///   coast: s̈ = 0 (admissible at every instant in the exact continuous loop if it was at the
+  ///   previous one);
+  ///   brake: none holds (a disturbance or an error beyond the model): the strongest of
+  ///   s̈ = −a, −a/2, … whose tracking torque now is within τ_max (else the smallest), with
+  ///   admissible = false.
+  [[nodiscard]] RateChoice choose(double sigma, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
+                                  double rate) const noexcept;
+
+  /// choose(σ, R, ω, 0).rate: the rate a clock at rest is given (docs/pet-erg.md, section 16.1,
+  /// "Choice of ṡ").
   [[nodiscard]] double choose_rate(double sigma, const lie::Mat3& R_ib,
-                                   const lie::Vec3& omega_b) const noexcept;
+                                   const lie::Vec3& omega_b) const noexcept {
+    return choose(sigma, R_ib, omega_b, 0.0).rate;
+  }
 
-  /// The tracking reference at plan time σ flown at the rate ṡ: R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ);
-  /// at σ ≥ T_p, R_d at rest (the hold).
-  [[nodiscard]] control::TrackingReference reference(double sigma, double rate) const noexcept;
+  /// The plan flown (docs/pet-erg.md, section 16.1).
+  [[nodiscard]] const SlewPlan& plan() const noexcept { return plan_; }
+  /// The tracking gains (docs/pet-erg.md, section 16).
+  [[nodiscard]] const control::TrackingGains& gains() const noexcept { return gains_; }
+  /// The torque bound τ_max [N·m].
+  [[nodiscard]] double tau_max() const noexcept { return tau_max_; }
+  /// The safety factor ε.
+  [[nodiscard]] double epsilon() const noexcept { return epsilon_; }
+
+  /// The tracking reference at plan time σ flown at the rate ṡ with the clock's acceleration s̈:
+  /// R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ) + s̈ ω_p(σ); at σ ≥ T_p, R_d at rest (the hold).
+  [[nodiscard]] control::TrackingReference reference(double sigma, double rate,
+                                                     double accel = 0.0) const noexcept;
 
  private:
   struct IntervalExtremes {
@@ -72,7 +127,13 @@ class ProgressGovernor {
   control::TrackingGains gains_;
   double sample_period_;
   double epsilon_;
+  double accel_max_{0.0};
   std::vector<IntervalExtremes> extremes_;  ///< per interval of the plan
+  std::vector<IntervalExtremes> suffix_;    ///< over intervals k … N − 1 (the plan ahead)
+  [[nodiscard]] int interval_of(double t) const noexcept;
+  /// The braking rule's s̈ (see choose).
+  [[nodiscard]] double brake_acceleration(double sigma, const lie::Mat3& R_ib,
+                                          const lie::Vec3& omega_b, double rate) const noexcept;
 };
 
 }  // namespace attiguard::governor

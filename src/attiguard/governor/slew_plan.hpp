@@ -8,6 +8,10 @@
 /// cubic through (ω_k, ω̇_k) and (ω_{k+1}, ω̇_{k+1}). The torque is the transcription's control,
 /// linear between a node, its interval's midpoint and the next node: a convex combination of
 /// torques the transcription kept within the bound, so the bound holds between them too.
+/// ω̇(t) = J⁻¹(τ(t) − ω(t) × Jω(t)), the body's acceleration under that torque: what a tracking
+/// law feeds forward is then the plan's torque (the derivative of the ω cubic would be the
+/// quadratic through the node, midpoint and node accelerations, up to 25 % above a torque that
+/// switches within the interval).
 ///
 /// Built once at set-up (allocates); evaluate() is noexcept and allocation-free (flight loop).
 
@@ -75,6 +79,7 @@ class SlewPlan {
   std::vector<SlewPlanNode> nodes_;
   std::vector<lie::Vec3> midpoint_tau_b_;
   lie::Mat3 J_b_{lie::Mat3::Identity()};
+  lie::Mat3 J_inv_b_{lie::Mat3::Identity()};
 };
 
 }  // namespace attiguard::governor

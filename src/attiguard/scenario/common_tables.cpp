@@ -233,7 +233,8 @@ TableReader parse_governor_block(const TableReader& root, governor::GovernorPara
     params.gains.kd = control.number("kd", NumberRule::positive());
   }
   params.tau_max = control.number("tau_max", NumberRule::positive());
-  parse_erg_table(root, params);
+  // [erg] is the PET-ERG's; the planned mode refuses it (read_pet_erg.cpp) and reads none of it.
+  if (params.mode != governor::GovernorMode::planned) parse_erg_table(root, params);
   return control;
 }
 

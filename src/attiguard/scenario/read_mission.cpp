@@ -60,6 +60,10 @@ sim::MissionScenario parse_mission(const Document& doc) {
   // The governor part: the blocks of kind pet_erg (common_tables.hpp), J from [spacecraft].
   const TableReader root(doc);
   const TableReader control = parse_governor_block(root, sc.params, {"align_tolerance"});
+  if (sc.params.mode == governor::GovernorMode::planned) {
+    root.fail("governor", "\"planned\" flies one planned slew of kind pet_erg; a mission's slews "
+                          "use \"pet\", \"continuous\" or \"none\"");
+  }
   sc.params.J = sc.waypoint.J;
   sc.align_tolerance = control.number_or("align_tolerance", sc.align_tolerance, NumberRule::positive());
   control.finish();

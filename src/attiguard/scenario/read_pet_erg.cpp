@@ -1,6 +1,8 @@
 // Scenario kind `pet_erg` (docs/scenario-format.md, section "pet_erg").
 
 #include "attiguard/scenario/read_pet_erg.hpp"
+
+#include "attiguard/sim/pet_erg_slew_problem.hpp"
 #include "attiguard/lie/symmetric_eigen.hpp"
 
 #include <array>
@@ -318,9 +320,10 @@ constexpr std::array<double, 12> kSoftenings{2.0, 4.0, 8.0, 16.0, 64.0, 256.0,
 /// With robust margins and k_p derived, the first softening of θ_ref whose design leaves room
 /// (Γ_min ≤ robust_share·(1 − δ)Γ_d') is taken, else the one with the most room, else none (the
 /// design's refusal then names the bound at fault). A derivation that fails is located at
-/// control.tau_max.
+/// control.tau_max. `planned`: governor = "planned", whose values are derived again at set-up
+/// (docs/pet-erg.md, section 16.2), so none is recorded for the resolved scenario.
 void derive_governor_values(const TableReader& root, const TableReader& control,
-                            sim::PetErgScenario& sc) {
+                            sim::PetErgScenario& sc, bool planned) {
   const governor::GivenGovernorValues given = given_governor_values(root, sc.params);
   governor::CraftScales craft = sim::craft_scales(sc);
   const auto derive = [&](double softening) {
@@ -348,13 +351,19 @@ void derive_governor_values(const TableReader& root, const TableReader& control,
     if (!(best_ratio < 1.0)) best = 1.0;
     if (best != craft.softening) derive(best);
   }
-  record_derived_values(sc.derived);
+  // The planned mode derives its gains and step again at set-up from the plan (docs/pet-erg.md,
+  // section 16.2): the PD hold's values are not written into a resolved scenario.
+  if (!planned) record_derived_values(sc.derived);
   const TableReader simulation = root.table("simulation");
   if (!simulation.has("step")) {
     sc.derived.integrator_step_derived = true;
     sc.derived.integrator_step = std::min(sc.derived.integrator_step, 0.1 * sc.duration);
     sc.integrator.step = sc.derived.integrator_step;
-    DefaultsRecorder::replace_derived("simulation.step", sc.integrator.step);
+    if (planned) {
+      DefaultsRecorder::record_unused("simulation.step");  // derived again at set-up
+    } else {
+      DefaultsRecorder::replace_derived("simulation.step", sc.integrator.step);
+    }
     require_step_budget(simulation, sc.integrator, sc.duration);
   }
 }
@@ -368,7 +377,26 @@ TableReader parse_control(const TableReader& root, sim::PetErgScenario& sc) {
   control.used_only_if("robust_reference_step", sc.margins == governor::Margins::robust,
                        "only with margins = \"robust\"");
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
+  if (sc.params.mode == GovernorMode::planned && sc.margins == governor::Margins::robust) {
+    control.fail("margins", "robust margins of the planned mode are not built yet: use "
+                            "margins = \"nominal\" with governor = \"planned\"");
+  }
   return control;
+}
+
+/// governor = "planned" (docs/pet-erg.md, section 16.2): one rest-to-rest slew, refused at its
+/// key otherwise; the [erg] table is the PET-ERG's and is not used.
+void check_planned(const TableReader& root, const sim::PetErgScenario& sc) {
+  if (sc.params.mode != GovernorMode::planned) return;
+  if (root.has("erg")) {
+    root.fail("erg", "[erg] sets the PET-ERG's reference governor; governor = \"planned\" does not "
+                     "use it (remove it, or set governor = \"pet\")");
+  }
+  if (const auto refusal = sim::slew_refusal(sc)) {
+    const TableReader table = root.table(refusal->table);
+    if (table.has(refusal->key)) table.fail(refusal->key, "governor = \"planned\": " + refusal->message);
+    table.fail_here("governor = \"planned\": " + refusal->message);
+  }
 }
 
 /// [initial] (docs/scenario-format.md, "pet_erg"): attitude, omega_b, reference (default the
@@ -481,10 +509,17 @@ void parse_plan(const TableReader& root, sim::PetErgScenario& sc) {
   const std::optional<TableReader> plan = root.optional_table("plan");
   if (!plan) return;
   declare(*plan, {"torque_headroom", "cone_margin_deg", "intervals"});
-  sc.plan.torque_headroom = plan->number_or("torque_headroom", sc.plan.torque_headroom,
-                                            {0.0, 1.0, false, true});
-  sc.plan.cone_margin =
-      plan->number_or("cone_margin_deg", 0.0, {0.0, 90.0, false, true}) * std::numbers::pi / 180.0;
+  // Read only when given (no recorded default): the planned mode derives the two when left out
+  // (docs/pet-erg.md, section 16.2), and a resolved scenario must derive them again.
+  sc.plan.torque_headroom_given = plan->has("torque_headroom");
+  if (sc.plan.torque_headroom_given) {
+    sc.plan.torque_headroom = plan->number("torque_headroom", {0.0, 1.0, false, true});
+  }
+  sc.plan.cone_margin_given = plan->has("cone_margin_deg");
+  if (sc.plan.cone_margin_given) {
+    sc.plan.cone_margin =
+        plan->number("cone_margin_deg", {0.0, 90.0, false, true}) * std::numbers::pi / 180.0;
+  }
   sc.plan.intervals = static_cast<int>(plan->integer_or("intervals", 0, 0, 2000));
   if (sc.plan.intervals != 0 && sc.plan.intervals < 4) {
     plan->fail("intervals", "must be 0 (derived) or at least 4");
@@ -529,13 +564,19 @@ sim::PetErgScenario parse_pet_erg_with(const Document& doc, PetErgChecks checks)
     sc.robust_reference_step = control.number_or("robust_reference_step", 0.0, NumberRule::positive());
   }
   parse_plan(root, sc);
-  derive_governor_values(root, control, sc);
+  check_planned(root, sc);
+  // The planned mode ends in the PD hold: its thresholds and admissibility are those of mode
+  // none (the start at rest outside every cone); the mode is set back below.
+  const bool planned = sc.params.mode == GovernorMode::planned;
+  if (planned) sc.params.mode = GovernorMode::none;
+  derive_governor_values(root, control, sc, planned);
   check_torque_threshold(control, sc.params);
   check_wheel_polytope(root, sc);
   const governor::GovernorDesign design = located_design(control, sc);
   check_step_counts(root, control, sc);
   root.finish();
   if (checks == PetErgChecks::run) check_admissible({root, initial, desired}, sc, design);
+  if (planned) sc.params.mode = GovernorMode::planned;
   return sc;
 }
 

@@ -37,6 +37,13 @@ class HeldActuation {
                                           const lie::Mat3& R_ib, const lie::Vec3& omega_b,
                                           const lie::Mat3& R_d) noexcept;
 
+  /// Sample k of the sensors (docs/pet-erg.md, section 11): what the flight software sees of the
+  /// true R_ib, ω_b at a control instant (for a governor other than AttitudeGovernor, which
+  /// then computes its torque and calls command()).
+  [[nodiscard]] dynamics::Measurement measure(const lie::Mat3& R_ib, const lie::Vec3& omega_b) noexcept {
+    return sensor_.measure(R_ib, omega_b, sample_++);
+  }
+
   /// The torque τ_b the flight software commands at t = t_k: quantised (docs/pet-erg.md,
   /// section 11), delayed, with wheels allocated u = A⁺τ clipped (section 12, the demand ratio
   /// recorded) and the momenta restarted from h(t_k); then held until the next command.

@@ -18,6 +18,8 @@
 #include "attiguard/sim/cone_json.hpp"
 #include "attiguard/sim/derived_values_json.hpp"
 #include "attiguard/sim/held_actuation.hpp"
+#include "attiguard/sim/pet_erg_loop.hpp"
+#include "attiguard/sim/planned_run.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
 namespace attiguard::sim {
@@ -28,206 +30,7 @@ using governor::GovernorMode;
 using governor::GovernorOutput;
 using lie::Mat3;
 using lie::Vec3;
-
-/// A stop of the integrator and what happens there.
-struct Stop {
-  double t{0.0};
-  bool sample{false};   ///< a sampling instant t_k of [PET-ERG eq. (5)] (continuous-time loop)
-  bool output{false};   ///< an output row
-  bool control{false};  ///< a control instant k·control_period (flight loop)
-};
-
-/// Sampling instants k·T_s in (0, duration), output instants, and schedule waypoints in
-/// (0, duration), merged (instants closer than 1e-9·min(T_s, output_interval) are one stop).
-std::vector<Stop> stop_plan(const PetErgScenario& sc) {
-  std::vector<Stop> stops;
-  for (double t : uniform_instants(sc.duration, sc.output_interval)) {
-    stops.push_back({t, false, true});
-  }
-  if (sc.control_period > 0.0) {
-    // The flight loop: the governor's own clock evaluates (5) at the control instants.
-    for (long k = 1;; ++k) {
-      const double t = static_cast<double>(k) * sc.control_period;
-      if (t >= sc.duration - 1e-9 * sc.control_period) {
-        break;
-      }
-      stops.push_back({t, false, false, true});
-    }
-  } else if (sc.params.mode != GovernorMode::none) {
-    // (5) in mode pet; the saddle tie-break in modes pet and continuous (docs/pet-erg.md, section 4).
-    for (long k = 1;; ++k) {
-      const double t = static_cast<double>(k) * sc.params.Ts;
-      if (t >= sc.duration - 1e-9 * sc.params.Ts) {
-        break;
-      }
-      stops.push_back({t, true, false});
-    }
-  }
-  for (int i = 0; i < sc.desired.size(); ++i) {
-    const double t = sc.desired[i].t;
-    if (t > 0.0 && t < sc.duration) {
-      stops.push_back({t, false, false});
-    }
-  }
-  std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
-  const double merge = 1e-9 * std::min({sc.params.Ts, sc.output_interval,
-                                        sc.control_period > 0.0 ? sc.control_period : sc.params.Ts});
-  std::vector<Stop> merged;
-  for (const Stop& s : stops) {
-    if (!merged.empty() && s.t - merged.back().t <= merge) {
-      Stop& m = merged.back();
-      m.sample = m.sample || s.sample;
-      m.output = m.output || s.output;
-      m.control = m.control || s.control;
-      // Keep the exact multiple k·T_s (or the duration) as the stop time.
-      if (s.sample || s.control || (s.output && !m.sample && !m.control)) {
-        m.t = s.t;
-      }
-      continue;
-    }
-    merged.push_back(s);
-  }
-  return merged;
-}
-
-/// The end of a run: distance left, active cones, the eigenaxis bang-bang time of the slew and
-/// the outcome (docs/pet-erg.md, "Outcomes"), R_d_end = R_d(duration). r.convergence_time and
-/// r.reference_motion are set.
-void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R_d_end,
-                    PetErgResult& r) {
-  r.reference_distance_left = lie::distance(R_g_end, R_d_end);
-  r.active_cones.clear();
-  const std::vector<governor::ConeConstraint>& cones = r.design.cones;  // the field's bands
-  for (std::size_t i = 0; i < cones.size(); ++i) {
-    if (governor::cone_cosine(cones[i], R_g_end) < cones[i].zeta) {
-      r.active_cones.push_back(static_cast<int>(i));
-    }
-  }
-  r.slew_angle = lie::distance(sc.R0_ib, R_d_end);
-  r.eigenaxis_bang_bang_time =
-      dynamics::eigenaxis_bang_bang_time(sc.params.J, sc.R0_ib, R_d_end, sc.params.tau_max);
-  OutcomeEvidence e;
-  e.governed = sc.params.mode != GovernorMode::none;
-  e.convergence_time = r.convergence_time;
-  e.distance_left = r.reference_distance_left;
-  e.distance_tolerance = std::acos(std::max(-1.0, 1.0 - sc.convergence_tolerance));
-  e.last_half = r.reference_motion;
-  r.outcome = classify_outcome(e);
-}
-
-}  // namespace
-
-namespace {
-
-/// The figures known before the run starts, with the governor's design.
-PetErgResult initial_result(const PetErgScenario& sc, governor::GovernorDesign design,
-                            const governor::AttitudeGovernor& gov) {
-  PetErgResult r;
-  r.design = std::move(design);
-  r.gamma_d = gov.gamma_d();
-  r.gamma_d_upper = gov.torque_threshold().upper_bound;
-  r.gamma_d_loose = gov.gamma_d_loose();
-  r.gamma_cap = gov.gamma_cap();
-  r.gamma_g_initial = gov.gamma_g(sc.R_g0);
-  r.gamma_initial = gov.gamma(sc.R_g0);
-  r.V_initial = gov.level(sc.R0_ib, sc.omega0_b, sc.R_g0);
-  r.min_pointing_margin = std::numeric_limits<double>::infinity();
-  r.min_margin_per_cone.assign(sc.cones.size(), std::numeric_limits<double>::infinity());
-  r.max_V_minus_Gamma = -std::numeric_limits<double>::infinity();
-  r.reference_motion = ReferenceMotion(0.5 * sc.duration);
-  return r;
-}
-
-/// A saddle tie-break started at t around cone `cone` (docs/pet-erg.md, section 4).
-void note_tie_break(PetErgResult& r, double t, int cone) {
-  if (r.saddle_tie_breaks++ == 0) r.first_tie_break_time = t;
-  if (std::find(r.tie_break_cones.begin(), r.tie_break_cones.end(), cone) == r.tie_break_cones.end()) {
-    r.tie_break_cones.push_back(cone);
-  }
-}
-
-/// Folds one instant into the figures: `out` is the governor's view with the torque applied.
-void record(const PetErgScenario& sc, PetErgResult& r, double t, const Mat3& R_d, const Mat3& R_ib,
-            const GovernorOutput& out) {
-  if (lie::phi(R_d.transpose() * R_ib) > sc.convergence_tolerance) {
-    r.convergence_time = -1.0;
-  } else if (r.convergence_time < 0.0) {
-    r.convergence_time = t;
-  }
-  r.reference_motion.observe(t, out.R_g);
-  r.max_torque_norm = std::max(r.max_torque_norm, out.tau_b.norm());
-  r.max_V_minus_Gamma = std::max(r.max_V_minus_Gamma, out.W - out.gamma);
-  for (int i = 0; i < out.cone_count; ++i) {
-    const double m = out.margins[static_cast<std::size_t>(i)];
-    auto& mi = r.min_margin_per_cone[static_cast<std::size_t>(i)];
-    mi = std::min(mi, m);
-    r.min_pointing_margin = std::min(r.min_pointing_margin, m);
-    if (m < 0.0 && r.first_pointing_violation_time < 0.0) {
-      r.first_pointing_violation_time = t;
-    }
-  }
-}
-
-/// The end of either loop: final errors, outcome and the integrator's counters.
-void finish(const PetErgScenario& sc, const PetErgState& y, const integrate::IntegrationStats& stats,
-            PetErgResult& r) {
-  const Mat3 R_d_end = sc.desired.at(sc.duration);
-  const Mat3 R_g_end = sc.params.mode == GovernorMode::none ? R_d_end : y.R[1];
-  r.final_attitude_error = std::max(0.0, lie::phi(R_d_end.transpose() * y.R[0]));
-  r.final_reference_error = std::max(0.0, lie::phi(R_d_end.transpose() * R_g_end));
-  r.final_omega_norm = y.x.norm();
-  finish_outcome(sc, R_g_end, R_d_end, r);
-  r.steps = stats.accepted_steps;
-  r.rejected_steps = stats.rejected_steps;
-  r.evaluations = stats.evaluations;
-}
-
-std::vector<double> stop_times(const std::vector<Stop>& plan) {
-  std::vector<double> times;
-  times.reserve(plan.size());
-  for (const Stop& s : plan) {
-    times.push_back(s.t);
-  }
-  return times;
-}
-
-/// The run from t = 0 over the stop plan of `sc` (both loops): `monitor` at t = 0, at every
-/// integrator step and at every stop; at each stop `at_stop(stop, t, state)` first (sampling or
-/// the control instant); rows to `on_output` at t = 0 and at the output stops.
-template <class Field, class Monitor, class AtStop>
-integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const Field& field, PetErgState& y,
-                                                 Monitor& monitor, AtStop& at_stop,
-                                                 const PetErgRowObserver& on_output) {
-  {
-    const GovernorOutput out0 = monitor(0.0, y);
-    if (on_output) {
-      on_output(0.0, y, sc.desired.at(0.0), out0);
-    }
-  }
-  const std::vector<Stop> plan = stop_plan(sc);
-  const std::vector<double> times = stop_times(plan);
-  std::size_t next = 0;
-  auto on_stop = [&](double t, PetErgState& s) {
-    const Stop& stop = plan[next++];
-    at_stop(stop, t, s);
-    const GovernorOutput out = monitor(t, s);
-    if (stop.output && on_output) {
-      on_output(t, s, sc.desired.at(t), out);
-    }
-    return true;
-  };
-  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
-  return integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
-}
-
-/// The state of either loop at t = 0: (R_0, R_g(0), ω_0) of the scenario's [initial].
-PetErgState pet_erg_initial_state(const PetErgScenario& sc) {
-  PetErgState y;
-  y.R[0] = sc.R0_ib;
-  y.R[1] = sc.R_g0;
-  y.x = sc.omega0_b;
-  return y;
-}
+using namespace pet_erg_loop;  // NOLINT: the loop's parts (sim/pet_erg_loop.hpp)
 
 /// control_period = 0: (R, R_g, ω) integrated as one ODE, R_g by [PET-ERG eq. (4)] or (6) (PET-ERG paper).
 PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
@@ -277,45 +80,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   return r;
 }
 
-/// The disturbance d on the plant of the flight loop (docs/pet-erg.md, section 11): the
-/// scenario's d(t), or the adversarial torque from the true state and R_g, held from each control
-/// instant or recomputed at every evaluation of the field.
-class PetErgPlantDisturbance {
- public:
-  explicit PetErgPlantDisturbance(const PetErgScenario& sc)
-      : im_(sc.imperfections),
-        adversarial_(im_.disturbance.kind == dynamics::DisturbanceKind::adversarial),
-        continuous_(adversarial_ && im_.adversary.update == DisturbanceUpdate::continuous),
-        adversary_(make_adversary(sc.params.J, sc.cones, im_.disturbance.bound, im_.adversary.weight)) {}
 
-  /// d at time t in the state s (an evaluation of the field).
-  [[nodiscard]] Vec3 at(double t, const PetErgState& s) const noexcept {
-    if (continuous_) return adversarial_torque(adversary_, s.R[0], s.x, s.R[1]);
-    return adversarial_ ? held_ : im_.disturbance.at(t);
-  }
-  /// At a control instant, once R_g is set: the adversarial torque held over the period.
-  void hold(const PetErgState& s) noexcept {
-    if (adversarial_) held_ = adversarial_torque(adversary_, s.R[0], s.x, s.R[1]);
-  }
-
- private:
-  const PetErgImperfections& im_;
-  bool adversarial_;
-  bool continuous_;
-  AdversaryModel adversary_;
-  Vec3 held_{Vec3::Zero()};
-};
-
-/// The wheels' figures of a flight-loop run (docs/pet-erg.md, section 12): the demand and
-/// momentum ratios, the momenta at the end, and Γ_d's upper bracket of the wheel polytope.
-void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, PetErgResult& r) {
-  r.max_wheel_torque_ratio = actuation.max_wheel_torque_ratio();
-  r.max_wheel_momentum_ratio = actuation.max_wheel_momentum_ratio();
-  if (!actuation.has_wheels()) return;
-  const dynamics::WheelVector h = actuation.momenta(sc.duration);
-  r.final_wheel_momentum.assign(h.begin(), h.begin() + actuation.wheels().count());
-  r.gamma_d_upper = std::min(r.gamma_d_upper, r.design.wheels.gamma_d_upper);
-}
 
 /// control_period > 0: the flight loop. AttitudeGovernor::step runs at t_k = k·h with the state
 /// of that instant and its torque is held until t_{k+1} (zero-order hold, HeldActuation); between
@@ -431,6 +196,7 @@ PetErgResult simulate_flight_loop(const PetErgScenario& sc, const PetErgRowObser
 }  // namespace
 
 PetErgResult simulate_pet_erg(const PetErgScenario& sc, const PetErgRowObserver& on_output) {
+  if (sc.params.mode == GovernorMode::planned) return simulate_planned(sc, on_output);
   return sc.control_period > 0.0 ? simulate_flight_loop(sc, on_output)
                                  : simulate_continuous_time(sc, on_output);
 }
@@ -484,6 +250,22 @@ nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
           {"start_allowance", m.start_allowance}};
 }
 
+/// Why a planned run did not converge (docs/pet-erg.md, section 16.2): the clock held short of
+/// the plan's end, with the level and thresholds of the last choice, or the plan flown to its
+/// end and the attitude not settled.
+std::string planned_reason(const PlannedFigures& f, const std::string& error) {
+  if (f.final_progress < f.plan.duration) {
+    return "the plan's clock stopped at sigma = " + four_digits(f.final_progress) + " of " +
+           four_digits(f.plan.duration) + " s (held " + four_digits(f.time_held) +
+           " s): the tracking error's level V = " + four_digits(f.last_V) +
+           " leaves no rate within the thresholds (Gamma_g = " + four_digits(f.last_gamma_g) +
+           ", torque bound " + four_digits(f.last_torque_bound) + " N m against tau_max " +
+           four_digits(f.tau_max) + " N m); " + error;
+  }
+  return "the plan is flown to its end but the attitude has not settled within the tolerance "
+         "(a disturbance, a sensor bias or slow damping); " + error;
+}
+
 /// One sentence with the numbers of a run that did not converge (docs/pet-erg.md, "Outcomes").
 std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
   const double left_deg = r.reference_distance_left * 180.0 / std::numbers::pi;
@@ -494,6 +276,7 @@ std::string outcome_reason(const PetErgScenario& sc, const PetErgResult& r) {
   for (int i : r.active_cones) cones += (cones.empty() ? "" : ", ") + std::to_string(i);
   const std::string active =
       cones.empty() ? "no cone's repulsive band active" : "repulsive band of cones [" + cones + "] active";
+  if (r.planned && r.outcome != PetErgOutcome::converged) return planned_reason(*r.planned, error);
   switch (r.outcome) {
     case PetErgOutcome::stalled:
       return "reference stopped " + four_digits(left_deg) + " deg short of R_d (moved " +
@@ -633,6 +416,50 @@ void add_counters(nlohmann::json& j, const PetErgResult& r) {
   j["evaluations"] = r.evaluations;
 }
 
+/// governor = "planned": the plan, the tracking gains and margins, the progress
+/// (docs/pet-erg.md, section 16.2; docs/scenario-format.md, "pet_erg", "Outputs").
+nlohmann::json planned_json(const PetErgResult& r) {
+  const PlannedFigures& f = *r.planned;
+  const plan::PlanReport& p = f.plan;
+  const double T_p = p.duration;
+  nlohmann::json plan = {{"duration", T_p},
+                         {"bang_bang_time", p.bang_bang_time},
+                         {"ratio", p.ratio},
+                         {"intervals", p.intervals},
+                         {"path_waypoints", p.path_waypoints},
+                         {"smallest_cone_margin_deg", p.check.smallest_cone_margin * 180.0 / std::numbers::pi},
+                         {"largest_torque_ratio", p.check.largest_torque_ratio},
+                         {"wall_time_s", p.planning_seconds},
+                         {"torque_limit", f.plan_torque_limit},
+                         {"torque_headroom", f.torque_headroom},
+                         {"torque_headroom_derived", f.torque_headroom_derived},
+                         {"cone_margin_deg", f.cone_margin * 180.0 / std::numbers::pi},
+                         {"cone_margin_derived", f.cone_margin_derived}};
+  return {{"plan", plan},
+          {"k_R", f.gains.k_R},
+          {"k_Omega", f.gains.k_Omega},
+          {"gains_derived", f.gains_derived},
+          {"natural_frequency", f.natural_frequency},
+          {"limited_by_loop_period", f.limited_by_loop_period},
+          {"limited_by_sensors", f.limited_by_sensors},
+          {"tau_max", f.tau_max},
+          {"sampling_period", f.sample_period},
+          {"epsilon", f.epsilon},
+          {"samples", f.samples},
+          {"inadmissible_samples", f.inadmissible_samples},
+          {"brakes", f.brakes},
+          {"min_rate", f.min_rate},
+          {"time_held", f.time_held},
+          {"progress_end_time", finite_or_null(f.progress_end_time >= 0.0 ? f.progress_end_time : NAN)},
+          {"final_progress", f.final_progress},
+          {"max_torque_bound_ratio", f.max_torque_bound_ratio},
+          {"max_demand_ratio", f.max_demand_ratio},
+          {"saturated_commands", f.saturated_commands},
+          {"convergence_time_over_plan",
+           r.convergence_time >= 0.0 && T_p > 0.0 ? nlohmann::json(r.convergence_time / T_p)
+                                                  : nlohmann::json(nullptr)}};
+}
+
 /// The cones [PET-ERG eq. (2b)] (the true constraints), with δ, ζ of their bands.
 nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {
   nlohmann::json j = nlohmann::json::array();
@@ -659,11 +486,60 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
   add_outcome(j, sc, r);
   add_counters(j, r);
   j["cones"] = pet_erg_cones_json(sc);
+  if (r.planned) j["planned"] = planned_json(r);
   if (r.output_rows > 0) j["output_rows"] = r.output_rows;
   return j;
 }
 
+namespace {
+
+/// The rows of a planned run (docs/scenario-format.md, "pet_erg", "Outputs"): qg is the plan's
+/// attitude R_p(σ), s and s_dot the clock σ and its rate ṡ, gamma_g the cone threshold ahead,
+/// torque_bound the bound on ‖τ‖ of the level set at the last choice, admissible whether that
+/// choice met the thresholds (docs/pet-erg.md, section 16.2).
+PetErgResult record_planned(const PetErgScenario& sc, io::RowSink& rows) {
+  const bool has_cones = !sc.cones.empty();
+  std::vector<std::string> columns{
+      "t",       "q_w",     "q_x",     "q_y",      "q_z",  "omega_x", "omega_y", "omega_z",
+      "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w", "qg_x",    "qg_y",    "qg_z",
+      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "s",    "s_dot",   "V"};
+  if (has_cones) columns.push_back("gamma_g");
+  for (const char* name : {"torque_bound", "admissible", "attitude_error", "reference_error"}) {
+    columns.push_back(name);
+  }
+  for (std::size_t i = 0; i < sc.cones.size(); ++i) columns.push_back("margin_" + std::to_string(i));
+  rows.begin(columns);
+  std::vector<double> row(columns.size());
+  long emitted = 0;
+  const PlannedRowObserver write_row = [&](double t, const PetErgState& y, const Mat3& R_d,
+                                           const GovernorOutput& out, const governor::PlannedOutput& p) {
+    const lie::Quat q = lie::rotation_to_quat(y.R[0]);
+    const lie::Quat qg = lie::rotation_to_quat(out.R_g);
+    const lie::Quat qd = lie::rotation_to_quat(R_d);
+    auto cell = row.begin();
+    for (const double v : {t, q(0), q(1), q(2), q(3), y.x(0), y.x(1), y.x(2), out.tau_b(0), out.tau_b(1),
+                           out.tau_b(2), out.tau_b.norm(), qg(0), qg(1), qg(2), qg(3), qd(0), qd(1), qd(2),
+                           qd(3), p.sigma, p.rate, out.V}) {
+      *cell++ = v;
+    }
+    if (has_cones) *cell++ = out.gamma_g;
+    for (const double v : {p.choice.torque_bound, p.choice.admissible ? 1.0 : 0.0,
+                           lie::phi(R_d.transpose() * y.R[0]), lie::phi(R_d.transpose() * out.R_g)}) {
+      *cell++ = v;
+    }
+    for (int i = 0; i < out.cone_count; ++i) *cell++ = out.margins[static_cast<std::size_t>(i)];
+    rows.row(row);
+    ++emitted;
+  };
+  PetErgResult result = simulate_planned(sc, rows.wants_rows() ? write_row : PlannedRowObserver{});
+  result.output_rows = emitted;
+  return result;
+}
+
+}  // namespace
+
 PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
+  if (sc.params.mode == GovernorMode::planned) return record_planned(sc, rows);
   // Γ_g only with cones: without one it is +∞ (pointing_threshold.hpp), which no output file
   // holds (docs/scenario-format.md, "Outputs"); one margin column per cone.
   const bool has_cones = !sc.cones.empty();

@@ -6,6 +6,7 @@
 /// sampling instant t_k = k·T_s where the trigger [PET-ERG eq. (5)] is evaluated and then held.
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/sim/pet_erg_outcome.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
+#include "attiguard/sim/planned_figures.hpp"
 
 namespace attiguard::sim {
 
@@ -72,6 +74,9 @@ struct PetErgResult {
   long rejected_steps{0};
   long evaluations{0};
   long output_rows{0};  ///< rows emitted into a sink (record_pet_erg)
+  /// governor = "planned" only: the plan, gains, margins and the progress (docs/pet-erg.md,
+  /// section 16.2).
+  std::optional<PlannedFigures> planned;
 };
 
 /// Simulates (1) under [PET-ERG eq. (3)] with the update [PET-ERG eq. (4)], [PET-ERG eqs. (5)-(6)] or none (PET-ERG paper) without any

@@ -37,7 +37,13 @@ struct PetErgImperfections {
 /// `[plan]` of a pet_erg scenario: the slew planner's settings (docs/slew-planner.md, "Options").
 struct SlewPlanSettings {
   double torque_headroom{0.05};  ///< the plan keeps ‖τ‖ ≤ (1 − headroom) × the torque limit
+  /// Whether the file gives torque_headroom: the planned mode derives it from the sensors'
+  /// errors when not (docs/pet-erg.md, section 16.2); `attiguard plan` takes 0.05.
+  bool torque_headroom_given{false};
   double cone_margin{0.0};       ///< [rad] every cone kept with this angle to spare
+  /// Whether the file gives cone_margin_deg: the planned mode derives it when not
+  /// (docs/pet-erg.md, section 16.2); `attiguard plan` takes 0.
+  bool cone_margin_given{false};
   int intervals{0};              ///< N (0: derived)
 };
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # CTest Viewer.BrowserOpensTheViewOfEveryKind (docs/viewer.md): runs the pet_erg, waypoint,
-# mission, reach and campaign examples and the plan of pet_erg_slew170 with --view (or `attiguard view`), then opens each
+# mission, reach and campaign examples, the plan of pet_erg_slew170 and its planned flight
+# (pet_erg_slew170_planned) with --view (or `attiguard view`), then opens each
 # view.html in headless Chromium (view_test.mjs). Skipped (exit 77) only when /usr/bin/chromium
 # is absent; CI installs it (scripts/setup.sh).
 # Usage: run_view_test.sh CLI NODE SOURCE_DIR WORK_DIR
@@ -21,6 +22,7 @@ rm -rf "$work"
 mkdir -p "$work"
 cd "$src"
 "$cli" run examples/pet_erg_paper.toml --out "$work/pet_erg_paper" --view
+"$cli" run examples/pet_erg_slew170_planned.toml --out "$work/pet_erg_slew170_planned" --view >/dev/null
 "$cli" run examples/waypoint_paper.toml --out "$work/waypoint_paper" --view
 "$cli" run examples/mission_sun_constrained.toml --out "$work/mission_sun_constrained" --view
 "$cli" run examples/rigid_body_pd.toml --out "$work/rigid_body_pd" --view
@@ -40,4 +42,4 @@ fi
 "$node" "$src/tests/viewer/view_test.mjs" "$src/viewer" "$work/screenshots" \
   "$work/pet_erg_paper" "$work/waypoint_paper" "$work/mission_sun_constrained" \
   "$work/conreach_paper" "$work/pet_erg_campaign" "$work/pet_erg_campaign/run_5" "$work/rigid_body_pd" \
-  "$work/pet_erg_slew170_plan"
+  "$work/pet_erg_slew170_plan" "$work/pet_erg_slew170_planned"

@@ -112,6 +112,16 @@ try {
       });
       check(clicked !== undefined, `${tag}: a click on a run selects it (run ${clicked})`);
     }
+    if (kind === 'pet_erg' && JSON.parse(fs.readFileSync(path.join(dir, 'summary.json'), 'utf8')).governor === 'planned') {
+      // A planned slew (docs/pet-erg.md 16.2): the plan in place of the governor's reference,
+      // the clock's strip (σ, ṡ) and ‖τ‖ against torque_bound in place of V and Γ.
+      const legend = await page.evaluate(() => document.getElementById('legend').textContent);
+      check(legend.includes('R_p(σ) a_b (plan at the governed clock') && !legend.includes('governor reference'),
+        `${tag}: the qg trace is labelled as the plan R_p(σ)`);
+      const titles = await page.evaluate(() => [...document.querySelectorAll('.strip')].map((b) => b.dataset.title));
+      check(titles.some((x) => x.startsWith('plan clock σ')) && titles.some((x) => x.includes('torque_bound'))
+        && !titles.some((x) => x.includes('threshold Γ')), `${tag}: strips ${titles.map((x) => x.split(' ').slice(0, 3).join(' ')).join(' | ')}`);
+    }
     const shot = path.join(shotDir, `view_${kind}_${path.basename(dir)}.png`);
     await page.screenshot({ path: shot, fullPage: true });
     console.log(`     screenshot ${shot} (${name})`);

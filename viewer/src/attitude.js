@@ -58,7 +58,11 @@ export function attitudeScene(renderer, s, summary) {
     scene.add(marker);
     boresights.push({ a: vec(a), marker });
   });
-  legend.push(['trace of R a_b (black; dot: now)', qg ? 'R_g a_b (cyan, dashed: governor reference)' : '',
+  // A planned slew (governor "planned", docs/pet-erg.md 16.2) writes the plan's attitude R_p(σ)
+  // at the governed clock σ in qg_*, where the PET-ERG writes its governor's reference R_g.
+  const planned = summary.governor === 'planned';
+  const reference = planned ? 'R_p(σ) a_b (plan at the governed clock; cyan, dashed)' : 'R_g a_b (cyan, dashed: governor reference)';
+  legend.push(['trace of R a_b (black; dot: now)', qg ? reference : '',
     qd ? 'R_d a_b (violet: desired; dot = final)' : ''].filter(Boolean).join(', ')
     + (coneList.length ? '' : '; a_b = x_b (no cone in this scenario)'));
 

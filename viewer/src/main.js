@@ -58,23 +58,58 @@ function headline(data) {
     if (s.smallest_cone_margin_deg !== null && s.smallest_cone_margin_deg !== undefined) parts.push(`smallest cone margin ${(+s.smallest_cone_margin_deg).toPrecision(4)}°`);
     if (s.largest_torque_ratio !== undefined) parts.push(`max ‖τ‖/τ_max ${(+s.largest_torque_ratio).toPrecision(4)}`);
   }
+  if (data.kind === 'pet_erg' && s.governor === 'planned' && s.planned && s.planned.plan) {
+    const p = s.planned;
+    const fig = (v, digits) => (v === null || v === undefined ? '–' : (+v).toPrecision(digits));
+    parts.push(`planned: plan T_p ${fig(p.plan.duration, 5)} s = ${fig(p.plan.ratio, 4)}× the eigenaxis bang-bang, converged at ${fig(p.convergence_time_over_plan, 4)}× T_p, clock held ${fig(p.time_held, 4)} s, min ṡ ${fig(p.min_rate, 4)}`);
+  }
   if (data.kind === 'campaign') parts.push(`runs ${s.runs_completed} / ${s.runs_requested}, ok ${s.ok}, violations ${s.violations}`);
   return parts.join(' · ');
 }
 
+/**
+ * The strips of a planned slew (pet_erg, governor "planned", docs/pet-erg.md 16.2) in place of
+ * the PET-ERG's V and Γ: the tracking law's V, the plan's clock σ (as σ/T_p) with its rate ṡ,
+ * and ‖τ‖ against the governor's torque bound and τ_max (whichever columns exist).
+ */
+function plannedStrips(parent, s, t, summary, add, strips) {
+  add('Lyapunov function V of the tracking law (to the plan R_p(σ)) [J]', ['V']);
+  const planned = summary.planned || {};
+  const tp = planned.plan && Number.isFinite(planned.plan.duration) && planned.plan.duration > 0 ? planned.plan.duration : null;
+  const clock = [];
+  if (s.has('s')) {
+    if (tp) clock.push({ label: `σ/T_p (T_p = ${tp.toPrecision(4)} s)`, values: s.col('s').map((v) => (v === null ? null : v / tp)) });
+    else clock.push({ label: 'σ [s]', values: s.col('s') });
+  }
+  if (s.has('s_dot')) clock.push({ label: 'ṡ', values: s.col('s_dot') });
+  if (clock.length) strips.push(makeStrip(parent, t, 'plan clock σ and its rate ṡ (ṡ < 1: the progress slowed; 0: held) [–]', clock, { zero: true }));
+  const torque = [];
+  if (s.has('tau_norm')) torque.push({ label: '‖τ‖', values: s.col('tau_norm'), color: '#222222' });
+  if (s.has('torque_bound')) torque.push({ label: 'torque_bound', values: s.col('torque_bound'), color: '#9467bd' });
+  const tauMax = Number.isFinite(summary.tau_max) ? summary.tau_max : Number.isFinite(planned.tau_max) ? planned.tau_max : null;
+  if (torque.length && tauMax !== null) torque.push({ label: 'τ_max', values: t.map(() => tauMax), color: '#d62728', width: 1 });
+  if (torque.length) strips.push(makeStrip(parent, t, 'torque ‖τ‖, torque_bound (the governor\'s bound on ‖τ‖ at the last choice of ṡ), τ_max [N m]', torque, { zero: true }));
+  return torque.length > 0;
+}
+
 /** The strips of a flight trajectory: V vs Γ, margins, torques (whichever columns exist). */
-function flightStrips(parent, s, t) {
+function flightStrips(parent, s, t, summary = {}) {
   const strips = [];
   const add = (title, names, opts) => {
     const lines = names.filter((n) => s.has(n)).map((n) => ({ label: n, values: s.col(n) }));
     if (lines.length) strips.push(makeStrip(parent, t, title, lines, opts));
   };
-  if (s.has('gamma')) add('Lyapunov function V and threshold Γ (PET-ERG paper (5)) [J]', ['V', 'gamma']);
+  const planned = summary.kind === 'pet_erg' && summary.governor === 'planned';
+  let torqueShown = false;
+  if (planned) torqueShown = plannedStrips(parent, s, t, summary, add, strips);
+  else if (s.has('gamma')) add('Lyapunov function V and threshold Γ (PET-ERG paper (5)) [J]', ['V', 'gamma']);
   else add('Lyapunov function V of the control law [J]', ['V']);
   const margins = s.columns.filter((c) => /^margin_\d+$/.test(c) || c === 'min_margin');
   add('pointing margins a_cᵀ R a_b − cos θ_c (≥ 0: satisfied) [–]', margins, { zero: true });
-  if (s.has('tau_norm')) add('torque ‖τ‖ [N m]', ['tau_norm']);
-  else add('body torque τ_b [N m]', ['tau_x', 'tau_y', 'tau_z']);
+  if (!torqueShown) {  // a planned run's ‖τ‖ is in its strips above, with its bounds
+    if (s.has('tau_norm')) add('torque ‖τ‖ [N m]', ['tau_norm']);
+    else add('body torque τ_b [N m]', ['tau_x', 'tau_y', 'tau_z']);
+  }
   add('main-engine thrust [N]', ['thrust']);
   add('RCT thrusters [N]', ['rct_1', 'rct_2', 'rct_3', 'rct_4', 'rct_5', 'rct_6']);
   return strips;
@@ -260,7 +295,7 @@ function main() {
   const ui = timeControls(t);
   const stripsBox = el('div', { id: 'strips' });
   document.body.appendChild(stripsBox);
-  const strips = data.kind === 'reach' ? reachStrips(stripsBox, series) : flightStrips(stripsBox, traj, t);
+  const strips = data.kind === 'reach' ? reachStrips(stripsBox, series) : flightStrips(stripsBox, traj, t, data.summary || {});
   const { setTime, state } = player(t, view, strips, ui);
 
   setTime(t[0]);

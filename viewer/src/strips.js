@@ -11,6 +11,7 @@ const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b'
 export function makeStrip(parent, t, title, lines, options = {}) {
   const box = document.createElement('div');
   box.className = 'strip';
+  box.dataset.title = title;  // what the strip shows, for the browser test
   const canvas = document.createElement('canvas');
   canvas.width = 900;
   canvas.height = options.height || 130;

@@ -2,6 +2,7 @@
 // evaluation, one flight-loop step, the offline Γ_d, and the whole Sec. V scenario (60 s).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <string>
@@ -17,6 +18,7 @@
 #include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
+#include "attiguard/sim/planned_run.hpp"
 
 namespace {
 
@@ -213,6 +215,60 @@ void BM_RobustWheelFlightStep(benchmark::State& state) {
   state.counters["sampled"] = benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_RobustWheelFlightStep)->ArgName("robust")->Arg(0)->Arg(1);
+
+// The same flight as BM_RobustWheelFlightStep/robust:0 (examples/pet_erg_robust_campaign_nominal.toml:
+// 4 wheels, 10 Hz, one period of delay, quantisation, sensor errors, adversarial disturbance),
+// flown in the planned mode (docs/pet-erg.md, section 16.2; the example's rest-to-rest twin: ω_0 = 0,
+// the tracking gains derived): one control instant = PlannedGovernor::step on the measured state
+// (delay prediction, choice of ṡ, tracking law, saturation), quantisation and the allocation
+// u = A⁺τ to the wheels. The measured states of the simulated flight loop are replayed in order
+// (the replay is checked against the flight's clock σ); at the end the governor is reset.
+void BM_PlannedWheelFlightStep(benchmark::State& state) {
+  auto sc = example_scenario("pet_erg_robust_campaign_nominal.toml");
+  sc.params.mode = GovernorMode::planned;
+  sc.omega0_b = Vec3::Zero();
+  sc.derived.kp_derived = sc.derived.kd_derived = true;
+  const attiguard::sim::PlannedSetup setup = attiguard::sim::planned_setup(sc);
+  sc.output_interval = sc.control_period;
+  std::vector<MeasuredSample> ring;
+  std::vector<double> sigma;
+  (void)attiguard::sim::simulate_planned(
+      sc, attiguard::sim::PlannedRowObserver([&](double t, const attiguard::sim::PetErgState& y, const Mat3&,
+                                                 const attiguard::governor::GovernorOutput&,
+                                                 const attiguard::governor::PlannedOutput& p) {
+        const auto m = sc.imperfections.sensor.measure(y.R[0], y.x, static_cast<std::uint64_t>(ring.size()));
+        ring.push_back({t, m.R_ib, m.omega_b});
+        sigma.push_back(p.sigma);
+      }));
+  attiguard::governor::PlannedGovernor gov(setup.planned.plan, setup.run.cones, setup.params);
+  const attiguard::dynamics::ReactionWheelArray array(sc.wheels);
+  const double quantum = sc.imperfections.torque_quantum;
+  gov.reset(0.0);
+  for (std::size_t i = 0; i < ring.size(); ++i) {  // untimed: the replay is the flight
+    (void)gov.step(ring[i].t, ring[i].R_ib, ring[i].omega_b);
+    if (!(std::abs(gov.clock().sigma_at(ring[i].t) - sigma[i]) < 1e-9)) {
+      state.SkipWithError("the replayed governor departs from the flight loop's clock");
+      return;
+    }
+  }
+  gov.reset(0.0);
+  std::size_t k = 0;
+  long samples = 0;
+  for (auto _ : state) {
+    const MeasuredSample& m = ring[k];
+    const auto& out = gov.step(m.t, m.R_ib, m.omega_b);
+    const auto u = array.allocate(attiguard::control::quantize_torque(out.tau_b, quantum));
+    benchmark::DoNotOptimize(u);
+    samples += out.sampled ? 1 : 0;
+    if (++k == ring.size()) {
+      k = 0;
+      gov.reset(0.0);
+    }
+  }
+  state.counters["ring"] = static_cast<double>(ring.size());
+  state.counters["sampled"] = benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_PlannedWheelFlightStep);
 
 // Offline Γ_d to 1e-12 (once per governor construction).
 void BM_TorqueThresholdOffline(benchmark::State& state) {

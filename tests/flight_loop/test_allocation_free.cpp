@@ -35,6 +35,7 @@
 #include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/spacecraft_plant.hpp"
 #include "attiguard/governor/attitude_governor.hpp"
+#include "attiguard/governor/planned_governor.hpp"
 #include "attiguard/governor/progress_governor.hpp"
 #include "attiguard/guidance/waypoint_sequencer.hpp"
 #include "attiguard/lie/axis_angle.hpp"
@@ -453,6 +454,42 @@ TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls
                                      << " steps of the tracking law and the progress governor";
+  EXPECT_GT(sigma, 0.0);  // the clock moved
+}
+
+// The planned mode's flight-loop object (docs/pet-erg.md, section 16.2): PlannedGovernor::step
+// at 10 Hz with one period of delay (the prediction, the choice of ṡ at every step, the tracking
+// law with the hold's feedforward, the saturation), flying the same plan as above from a start
+// off the plan by 2 deg. Set-up outside the
+// counted window; also throw-free (noexcept).
+TEST(AllocationFree, PlannedGovernorStepFlyingAPlanWithDelay) {
+  plan::SlewProblem p;
+  p.J_b = Vec3(2.4, 3.1, 3.9).asDiagonal();
+  p.tau_max = 1.0;
+  p.torque_headroom = 0.1;
+  p.cone_margin = 4.0 * std::numbers::pi / 180.0;
+  p.R_target = lie::exp(Vec3(0.0, 1.0, 0.0) * (120.0 * std::numbers::pi / 180.0));
+  const Vec3 sun = lie::exp(Vec3(0.0, 1.0, 0.0) * (60.0 * std::numbers::pi / 180.0)) * Vec3::UnitZ();
+  p.cones.push_back(governor::keep_out_cone(Vec3::UnitZ(), sun, 25.0 * std::numbers::pi / 180.0));
+  const plan::PlannedSlew planned = plan::plan_slew(p);
+  const double h = 0.1;
+  governor::PlannedGovernor gov(planned.plan, p.cones,
+                                governor::PlannedGovernorParams{{2.0, 4.0}, p.tau_max, h, 0.05, h, 1});
+  const dynamics::RigidBody body(p.J_b);
+  Mat3 R_ib = lie::exp(Vec3(2.0 * std::numbers::pi / 180.0, 0.0, 0.0));
+  Vec3 omega_b = Vec3::Zero();
+  static_assert(noexcept(gov.step(0.0, R_ib, omega_b)));
+  Vec3 acting_b = Vec3::Zero();
+  gov.reset(0.0);
+  g_allocations = 0;
+  double sigma = 0.0;
+  for (int k = 0; k < kCalls; ++k) {
+    const governor::PlannedOutput out = counted([&] { return gov.step(k * h, R_ib, omega_b); });
+    propagate_attitude(body, acting_b, h, R_ib, omega_b);  // one period of delay
+    acting_b = out.tau_b;
+    sigma = out.sigma;
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls << " PlannedGovernor steps";
   EXPECT_GT(sigma, 0.0);  // the clock moved
 }
 

@@ -38,7 +38,8 @@ AttitudeGovernor::AttitudeGovernor(const GovernorParams& params,
                                    std::span<const ConeConstraint> cones)
     : params_(params) {
   require(params.mode != GovernorMode::planned,
-          "mode planned is flown by PlannedGovernor (planned_governor.hpp), not AttitudeGovernor");
+          "mode \"planned\" flies a planned slew (a scenario with governor = \"planned\", or "
+          "governor::PlannedGovernor in C++), not this governor");
   require(positive_finite(params.gains.kp) && positive_finite(params.gains.kd),
           "kp and kd must be positive and finite");
   require(positive_finite(params.tau_max), "tau_max must be positive and finite");

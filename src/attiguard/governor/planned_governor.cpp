@@ -96,25 +96,40 @@ const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib,
     predict(R_ib, omega_b, R, omega);
   }
   RateChoice choice = out_.choice;
+  // The plan at the clock's σ, evaluated once: the choice keeps σ at t_act.
+  const double sigma = clock_.sigma_at(t_act);
+  const SlewPlan& plan = progress_.plan();
+  const int k = plan.interval_of(sigma);
+  const SlewPlanSample at_sigma = plan.evaluate_in(k, std::min(sigma, plan.duration()));
   // A sampling instant (up to rounding of k·T_s); missed instants are not caught up.
   const bool sampled = t >= next_sample_ - 1e-9 * params_.sample_period;
   if (sampled) {
-    const double sigma = clock_.sigma_at(t_act);
-    choice = progress_.choose(sigma, R, omega, clock_.rate_at(t_act));
+    choice = progress_.choose(at_sigma, sigma, R, omega, clock_.rate_at(t_act));
     clock_ = ProgressClock{t_act, sigma, choice.rate, choice.accel, clock_.duration};
     const double Ts = params_.sample_period;
     next_sample_ += Ts * (std::floor((t - next_sample_) / Ts + 1e-9) + 1.0);
   }
-  out_ = evaluate(clock_.sigma_at(t_act), clock_.rate_at(t_act), clock_.accel_at(t_act), R, omega);
+  const double rate = clock_.rate_at(t_act);
+  const double accel = clock_.accel_at(t_act);
+  out_.sigma = sigma;
+  out_.rate = rate;
+  out_.accel = accel;
+  out_.reference = progress_.reference(at_sigma, sigma, rate, accel);
+  control::TrackingReference ref = out_.reference;
   if (h > 0.0) {
     // Held over [t_act, t_act + h): the feedforward of the plan's acceleration at the middle.
     const double t_mid = t_act + 0.5 * h;
-    const control::TrackingReference mid =
-        progress_.reference(clock_.sigma_at(t_mid), clock_.rate_at(t_mid), clock_.accel_at(t_mid));
-    control::TrackingReference ref = out_.reference;
-    ref.omega_dot_b = mid.omega_dot_b;
-    saturate(control::tracking_torque(progress_.plan().inertia(), R, omega, ref, params_.gains), out_);
+    const double sigma_mid = clock_.sigma_at(t_mid);
+    SlewPlanSample mid;
+    const bool same = sigma_mid <= plan.nodes()[static_cast<std::size_t>(k + 1)].t;
+    plan.rates_in(same ? k : plan.interval_of(sigma_mid), sigma_mid, mid);
+    ref.omega_dot_b = progress_.reference(mid, sigma_mid, clock_.rate_at(t_mid), clock_.accel_at(t_mid))
+                          .omega_dot_b;
   }
+  const lie::Mat3& J = plan.inertia();
+  saturate(control::tracking_torque(J, R, omega, ref, params_.gains), out_);
+  // V does not depend on s̈: at a sampling instant the choice's V is the V at the rate chosen.
+  out_.V = sampled ? choice.V : control::tracking_lyapunov(J, R, omega, out_.reference, params_.gains);
   pending_b_ = out_.tau_b;
   out_.choice = choice;
   out_.sampled = sampled;

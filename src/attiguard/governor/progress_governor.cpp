@@ -93,6 +93,10 @@ ProgressGovernor::ProgressGovernor(const SlewPlan& plan, std::span<const ConeCon
     e.tau_max = std::max(e.tau_max, next.tau_max);
     e.cone_margin_min = std::min(e.cone_margin_min, next.cone_margin_min);
   }
+  suffix_gamma_g_.reserve(suffix_.size());
+  for (const IntervalExtremes& e : suffix_) {
+    suffix_gamma_g_.push_back(cone_threshold(PlanWindow{0.0, 0.0, 0.0, e.cone_margin_min}));
+  }
 }
 
 int ProgressGovernor::interval_of(double t) const noexcept {
@@ -106,6 +110,10 @@ int ProgressGovernor::interval_of(double t) const noexcept {
 PlanWindow ProgressGovernor::ahead(double sigma) const noexcept {
   const IntervalExtremes& e = suffix_[static_cast<std::size_t>(interval_of(sigma))];
   return PlanWindow{e.omega_max, e.omega_dot_max, e.tau_max, e.cone_margin_min};
+}
+
+double ProgressGovernor::cone_threshold_ahead(double sigma) const noexcept {
+  return suffix_gamma_g_[static_cast<std::size_t>(interval_of(sigma))];
 }
 
 PlanWindow ProgressGovernor::window(double from, double to) const noexcept {
@@ -141,24 +149,32 @@ double ProgressGovernor::torque_bound(double gamma, double rate, const PlanWindo
   gamma = std::max(0.0, gamma);
   const double s2 = rate * rate;
   const double a = std::abs(accel);
+  const double feedforward_spread =
+      (lambda_max_ - lambda_min_) * (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
   const auto attitude_terms = [&](double f) {
-    const double theta = std::acos(std::max(-1.0, 1.0 - f * gamma / gains_.k_R));
-    const double sin_bound = theta < 0.5 * std::numbers::pi ? std::sin(theta) : 1.0;
-    return gains_.k_R * sin_bound +
-           theta * (lambda_max_ - lambda_min_) *
-               (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
+    // 1 − cos θ = x: sin θ = √(x(2 − x)) while θ < π/2, and θ = 2 asin √(x/2) is at most
+    // √(2x/(1 − x/2)) (asin y ≤ y/√(1 − y²)), tight for small θ; acos beyond x = 1.
+    const double x = std::min(2.0, f * gamma / gains_.k_R);
+    const double sin_bound = x < 1.0 ? std::sqrt(x * (2.0 - x)) : 1.0;
+    const double theta = x < 1.0 ? std::sqrt(2.0 * x / (1.0 - 0.5 * x)) : std::acos(1.0 - x);
+    return gains_.k_R * sin_bound + theta * feedforward_spread;
   };
   const auto rate_terms = [&](double f) {
     const double E = std::sqrt(2.0 * (1.0 - f) * gamma / lambda_min_);
     return gains_.k_Omega * E + lambda_max_ * E * E + 3.0 * lambda_max_ * E * rate * w.omega_max;
   };
+  const double reference = s2 * w.tau_max + a * lambda_max_ * w.omega_max;
+  // Both errors at the full Γ bounds every split: within τ_max, that coarse bound is the answer
+  // (one evaluation, the flight loop's usual case); else the cells.
+  const double coarse = attitude_terms(1.0) + rate_terms(0.0) + reference;
+  if (coarse <= tau_max_) return coarse;
   double worst = 0.0;
   for (int i = 0; i < kSplitCells; ++i) {
     const double f0 = static_cast<double>(i) / kSplitCells;
     const double f1 = static_cast<double>(i + 1) / kSplitCells;
     worst = std::max(worst, attitude_terms(f1) + rate_terms(f0));
   }
-  return worst + s2 * w.tau_max + a * lambda_max_ * w.omega_max;
+  return worst + reference;
 }
 
 double ProgressGovernor::torque_threshold(double rate, const PlanWindow& w) const noexcept {
@@ -190,11 +206,20 @@ control::TrackingReference ProgressGovernor::reference(double sigma, double rate
   return scaled(plan_.evaluate(sigma), sigma >= plan_.duration(), rate, accel);
 }
 
+control::TrackingReference ProgressGovernor::reference(const SlewPlanSample& at_sigma, double sigma,
+                                                       double rate, double accel) const noexcept {
+  return scaled(at_sigma, sigma >= plan_.duration(), rate, accel);
+}
+
 RateChoice ProgressGovernor::choose(double sigma, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
                                    double rate) const noexcept {
+  return choose(plan_.evaluate(sigma), sigma, R_ib, omega_b, rate);
+}
+
+RateChoice ProgressGovernor::choose(const SlewPlanSample& s, double sigma, const lie::Mat3& R_ib,
+                                   const lie::Vec3& omega_b, double rate) const noexcept {
   // V(ṡ) = ½(ω − ṡ v)ᵀJ(ω − ṡ v) + k_R φ(R_e), v = R_e ω_p(σ): R_e, v and φ once for every
   // candidate (docs/pet-erg.md, section 16.1, "Choice of ṡ").
-  const SlewPlanSample s = plan_.evaluate(sigma);
   const bool at_end = sigma >= plan_.duration();
   rate = std::clamp(rate, 0.0, 1.0);
   const lie::Mat3 R_e = R_ib.transpose() * s.R_ib;
@@ -204,10 +229,12 @@ RateChoice ProgressGovernor::choose(double sigma, const lie::Mat3& R_ib, const l
     const lie::Vec3 e = omega_b - r * v;
     return 0.5 * e.dot(J_b_ * e) + attitude_part;
   };
-  const PlanWindow w = ahead(sigma);
+  const auto k = static_cast<std::size_t>(interval_of(sigma));
+  const IntervalExtremes& e = suffix_[k];
+  const PlanWindow w{e.omega_max, e.omega_dot_max, e.tau_max, e.cone_margin_min};
   const double keep = 1.0 - epsilon_;
   RateChoice c;
-  c.gamma_g = cone_threshold(w);
+  c.gamma_g = suffix_gamma_g_[k];
   // Admissible: V ≤ (1 − ε)Γ_g and the bound of {V ≤ V/(1 − ε)} at the period's largest rate.
   const auto holds = [&](double V, double top_rate, double accel) {
     c.V = V;

@@ -70,12 +70,16 @@ class ProgressGovernor {
   [[nodiscard]] double torque_threshold(double rate, const PlanWindow& w) const noexcept;
 
   /// The bound on ‖τ‖ over the level set {V ≤ Γ} at the rate ṡ and the clock's acceleration s̈
-  /// (docs/pet-erg.md, section 16.1, "Torque").
+  /// (docs/pet-erg.md, section 16.1, "Torque"): the coarse bound (both errors at the full Γ)
+  /// when it is within τ_max, else the bound over the 16 cells of the split of Γ.
   [[nodiscard]] double torque_bound(double gamma, double rate, const PlanWindow& w,
                                     double accel = 0.0) const noexcept;
 
   /// a: the largest |s̈| of the clock [1/s], 4/T_p (docs/pet-erg.md, section 16.1).
   [[nodiscard]] double clock_acceleration() const noexcept { return accel_max_; }
+
+  /// cone_threshold(ahead(σ)), from a table (docs/pet-erg.md, section 16.1, "Choice of ṡ").
+  [[nodiscard]] double cone_threshold_ahead(double sigma) const noexcept;
 
   /// The plan's extremes over everything ahead of σ, [σ, T_p] (docs/pet-erg.md, section 16.1,
   /// "Choice of ṡ"): a table look-up; the thresholds of it do not fall as σ grows.
@@ -94,6 +98,9 @@ class ProgressGovernor {
   ///   admissible = false.
   [[nodiscard]] RateChoice choose(double sigma, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
                                   double rate) const noexcept;
+  /// choose() with the plan's sample at σ already evaluated (plan().evaluate(σ)).
+  [[nodiscard]] RateChoice choose(const SlewPlanSample& at_sigma, double sigma, const lie::Mat3& R_ib,
+                                  const lie::Vec3& omega_b, double rate) const noexcept;
 
   /// choose(σ, R, ω, 0).rate: the rate a clock at rest is given (docs/pet-erg.md, section 16.1,
   /// "Choice of ṡ").
@@ -115,6 +122,10 @@ class ProgressGovernor {
   /// R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ) + s̈ ω_p(σ); at σ ≥ T_p, R_d at rest (the hold).
   [[nodiscard]] control::TrackingReference reference(double sigma, double rate,
                                                      double accel = 0.0) const noexcept;
+  /// reference() from the plan's sample at σ (plan().evaluate(σ), or plan().rates(σ) when only
+  /// the rates are used).
+  [[nodiscard]] control::TrackingReference reference(const SlewPlanSample& at_sigma, double sigma,
+                                                     double rate, double accel) const noexcept;
 
  private:
   struct IntervalExtremes {
@@ -130,6 +141,7 @@ class ProgressGovernor {
   double accel_max_{0.0};
   std::vector<IntervalExtremes> extremes_;  ///< per interval of the plan
   std::vector<IntervalExtremes> suffix_;    ///< over intervals k … N − 1 (the plan ahead)
+  std::vector<double> suffix_gamma_g_;      ///< Γ_g of suffix_ (no cosine per step)
   [[nodiscard]] int interval_of(double t) const noexcept;
   /// The braking rule's s̈ (see choose).
   [[nodiscard]] double brake_acceleration(double sigma, const lie::Mat3& R_ib,

@@ -57,6 +57,8 @@ SlewPlan::SlewPlan(std::vector<SlewPlanNode> nodes, std::vector<lie::Vec3> midpo
     }
   }
   J_inv_b_ = J_b_.inverse();
+  q_rate_.reserve(nodes_.size());
+  for (const SlewPlanNode& n : nodes_) q_rate_.push_back(quaternion_rate(n.q_ib, n.omega_b));
   if (midpoint_tau_b_.size() + 1 != nodes_.size()) {
     throw SetupError("a slew plan needs one midpoint torque per interval");
   }
@@ -65,18 +67,12 @@ SlewPlan::SlewPlan(std::vector<SlewPlanNode> nodes, std::vector<lie::Vec3> midpo
   }
 }
 
-SlewPlanSample SlewPlan::evaluate_in(int k, double t) const noexcept {
+void SlewPlan::rates_in(int k, double t, SlewPlanSample& out) const noexcept {
   const SlewPlanNode& a = nodes_[static_cast<std::size_t>(k)];
   const SlewPlanNode& b = nodes_[static_cast<std::size_t>(k + 1)];
   const double h = b.t - a.t;
   const double s = std::clamp((t - a.t) / h, 0.0, 1.0);
   const HermiteBasis w = hermite_basis(s);
-  const lie::Quat qa_rate = quaternion_rate(a.q_ib, a.omega_b);
-  const lie::Quat qb_rate = quaternion_rate(b.q_ib, b.omega_b);
-  const lie::Quat q = w.h00 * a.q_ib + w.h10 * h * qa_rate + w.h01 * b.q_ib + w.h11 * h * qb_rate;
-  SlewPlanSample out;
-  out.q_ib = q / q.norm();
-  out.R_ib = lie::quat_to_rotation(out.q_ib);
   out.omega_b = w.h00 * a.omega_b + w.h10 * h * a.omega_dot_b + w.h01 * b.omega_b +
                 w.h11 * h * b.omega_dot_b;
   const lie::Vec3& tau_mid = midpoint_tau_b_[static_cast<std::size_t>(k)];
@@ -86,17 +82,43 @@ SlewPlanSample SlewPlan::evaluate_in(int k, double t) const noexcept {
   // quadratic through the node, midpoint and node accelerations, which overshoots a torque that
   // switches within the interval by up to 25 %).
   out.omega_dot_b = J_inv_b_ * (out.tau_b - out.omega_b.cross(J_b_ * out.omega_b));
+}
+
+SlewPlanSample SlewPlan::evaluate_in(int k, double t) const noexcept {
+  const SlewPlanNode& a = nodes_[static_cast<std::size_t>(k)];
+  const SlewPlanNode& b = nodes_[static_cast<std::size_t>(k + 1)];
+  const double h = b.t - a.t;
+  const double s = std::clamp((t - a.t) / h, 0.0, 1.0);
+  const HermiteBasis w = hermite_basis(s);
+  const lie::Quat& qa_rate = q_rate_[static_cast<std::size_t>(k)];
+  const lie::Quat& qb_rate = q_rate_[static_cast<std::size_t>(k + 1)];
+  const lie::Quat q = w.h00 * a.q_ib + w.h10 * h * qa_rate + w.h01 * b.q_ib + w.h11 * h * qb_rate;
+  SlewPlanSample out;
+  out.q_ib = q / q.norm();
+  out.R_ib = lie::quat_to_rotation(out.q_ib);
+  rates_in(k, t, out);
   return out;
+}
+
+int SlewPlan::interval_of(double t) const noexcept {
+  // The interval k with t_k ≤ t ≤ t_{k+1}: the first node after t, minus one.
+  const auto after = std::upper_bound(nodes_.begin(), nodes_.end(), t,
+                                      [](double v, const SlewPlanNode& n) { return v < n.t; });
+  return std::clamp(static_cast<int>(after - nodes_.begin()) - 1, 0, intervals() - 1);
 }
 
 SlewPlanSample SlewPlan::evaluate(double t) const noexcept {
   if (nodes_.size() < 2) return {};
   const double tc = std::clamp(t, 0.0, duration());
-  // The interval k with t_k ≤ tc ≤ t_{k+1}: the first node after tc, minus one.
-  const auto after = std::upper_bound(nodes_.begin(), nodes_.end(), tc,
-                                      [](double v, const SlewPlanNode& n) { return v < n.t; });
-  const int k = std::clamp(static_cast<int>(after - nodes_.begin()) - 1, 0, intervals() - 1);
-  return evaluate_in(k, tc);
+  return evaluate_in(interval_of(tc), tc);
+}
+
+SlewPlanSample SlewPlan::rates(double t) const noexcept {
+  SlewPlanSample out;
+  if (nodes_.size() < 2) return out;
+  const double tc = std::clamp(t, 0.0, duration());
+  rates_in(interval_of(tc), tc, out);
+  return out;
 }
 
 }  // namespace attiguard::governor

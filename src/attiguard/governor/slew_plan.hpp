@@ -58,6 +58,13 @@ class SlewPlan {
   /// The plan at time t (clamped to [0, duration]): cubic Hermite interpolant of the
   /// Hermite–Simpson transcription (docs/slew-planner.md, "The plan as a trajectory").
   [[nodiscard]] SlewPlanSample evaluate(double t) const noexcept;
+  /// ω, ω̇ and τ at time t (the attitude left at its default): evaluate() without the
+  /// quaternion's interpolation, for a feedforward that needs the rates only.
+  [[nodiscard]] SlewPlanSample rates(double t) const noexcept;
+  /// The interval k with t_k ≤ t ≤ t_{k+1} (t clamped to the plan; a binary search).
+  [[nodiscard]] int interval_of(double t) const noexcept;
+  /// ω, ω̇, τ of interval k at t into `out` (not the attitude); rates() finds k.
+  void rates_in(int k, double t, SlewPlanSample& out) const noexcept;
   /// The plan at time t within interval k (t_k ≤ t ≤ t_{k+1}); evaluate() finds k.
   [[nodiscard]] SlewPlanSample evaluate_in(int k, double t) const noexcept;
   /// t_N: the slew's duration [s].
@@ -80,6 +87,7 @@ class SlewPlan {
   std::vector<lie::Vec3> midpoint_tau_b_;
   lie::Mat3 J_b_{lie::Mat3::Identity()};
   lie::Mat3 J_inv_b_{lie::Mat3::Identity()};
+  std::vector<lie::Quat> q_rate_;  ///< q̇_k = ½ q_k ⊗ [0, ω_k] of each node
 };
 
 }  // namespace attiguard::governor

@@ -29,9 +29,16 @@ Quat quat_multiply(const Quat& p, const Quat& q) noexcept {
 Quat quat_conjugate(const Quat& q) noexcept { return Quat(q(0), -q(1), -q(2), -q(3)); }
 
 Mat3 quat_to_rotation(const Quat& q) noexcept {
+  // R = I + 2η ε̂ + 2 ε̂², written out entry by entry (ε̂² = εεᵀ − ‖ε‖² I).
   const Quat u = q / q.norm();
-  const Mat3 S = hat(u.tail<3>());
-  return Mat3::Identity() + 2.0 * u(0) * S + 2.0 * S * S;
+  const double w = u(0), x = u(1), y = u(2), z = u(3);
+  const double xx = x * x, yy = y * y, zz = z * z;
+  const double xy = x * y, xz = x * z, yz = y * z, wx = w * x, wy = w * y, wz = w * z;
+  Mat3 R;
+  R << 1.0 - 2.0 * (yy + zz), 2.0 * (xy - wz), 2.0 * (xz + wy),  //
+      2.0 * (xy + wz), 1.0 - 2.0 * (xx + zz), 2.0 * (yz - wx),    //
+      2.0 * (xz - wy), 2.0 * (yz + wx), 1.0 - 2.0 * (xx + yy);
+  return R;
 }
 
 Quat rotation_to_quat(const Mat3& R) noexcept {

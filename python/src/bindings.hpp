@@ -20,5 +20,7 @@ void bind_governor(pybind11::module_& m);
 void bind_guidance(pybind11::module_& m);
 /// The slew planner (docs/slew-planner.md): _plan_slew returns the plan as numpy arrays.
 void bind_plan(pybind11::module_& m);
+/// The planned mode's governor in a user's loop (docs/pet-erg.md, section 16.2).
+void bind_planned(pybind11::module_& m);
 
 }  // namespace attiguard::python

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_core, m) {
   attiguard::python::bind_governor(m);
   attiguard::python::bind_guidance(m);
   attiguard::python::bind_plan(m);
+  attiguard::python::bind_planned(m);
 }

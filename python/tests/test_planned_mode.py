@@ -59,3 +59,56 @@ def test_the_planned_mode_refuses_a_moving_start_at_its_key(tmp_path):
     path.write_text(text)
     with pytest.raises(ag.InputError, match=r"moving\.toml:\d+:\d+: initial\.omega_b: .*rest"):
         ag.run(path)
+
+
+def _flight_loop_scenario(tmp_path: Path) -> Path:
+    """The example in the flight loop at 10 Hz, one row per control instant, no imperfections."""
+    text = EXAMPLE.read_text()
+    text = text.replace("tau_max = 0.5                          # N m\n",
+                        "tau_max = 0.5                          # N m\ncontrol_period = 0.1\n")
+    text = text.replace("output_interval = 0.5", "output_interval = 0.1")
+    path = tmp_path / "planned_10hz.toml"
+    path.write_text(text)
+    return path
+
+
+def test_a_user_loop_stepping_the_planned_governor_reproduces_the_cli_to_1e_12(tmp_path):
+    # The CLI's flight loop at 10 Hz commands at each control instant what PlannedGovernor.step
+    # returns for the state there: replayed row by row in a Python loop, the same torques and
+    # clock to 1e-12.
+    path = _flight_loop_scenario(tmp_path)
+    cli = ag.run(path)
+    assert cli.summary["outcome"] == "converged"
+    gov = ag.PlannedGovernor.from_scenario(str(path))
+    assert gov.plan_duration == pytest.approx(cli.summary["planned"]["plan"]["duration"], rel=1e-12)
+    assert gov.k_R == cli.summary["planned"]["k_R"]
+    gov.reset(0.0)
+    tau_max = gov.tau_max
+    worst_tau = worst_sigma = 0.0
+    for i, t in enumerate(cli["t"]):
+        q = np.array([cli["q_w"][i], cli["q_x"][i], cli["q_y"][i], cli["q_z"][i]])
+        omega = np.array([cli["omega_x"][i], cli["omega_y"][i], cli["omega_z"][i]])
+        out = gov.step(t, ag.quat_to_rotation(q), omega)
+        tau = np.array([cli["tau_x"][i], cli["tau_y"][i], cli["tau_z"][i]])
+        worst_tau = max(worst_tau, float(np.max(np.abs(out.tau_b - tau))) / tau_max)
+        worst_sigma = max(worst_sigma, abs(out.sigma - cli["s"][i]) / gov.plan_duration)
+    print(f"replay of {len(cli['t'])} control instants: worst |tau - tau_cli|/tau_max {worst_tau:.3g}, "
+          f"worst |sigma - s_cli|/T_p {worst_sigma:.3g}")
+    assert worst_tau <= 1e-12
+    assert worst_sigma <= 1e-12
+
+
+def test_the_planned_governor_refuses_what_the_cli_refuses(tmp_path):
+    with pytest.raises(ag.InputError, match=r'pet_erg_slew170\.toml:\d+:\d+: governor: .*needs governor = "planned"'):
+        ag.PlannedGovernor.from_scenario(str(REPO / "examples" / "pet_erg_slew170.toml"))
+    gov = ag.PlannedGovernor.from_scenario(str(EXAMPLE))
+    with pytest.raises(ag.InputError, match=r"reset\(t0\) before"):
+        gov.step(0.0, np.eye(3), np.zeros(3))
+    gov.reset(0.0)
+    gov.step(1.0, np.eye(3), np.zeros(3))
+    with pytest.raises(ag.InputError, match="time went backwards"):
+        gov.step(0.5, np.eye(3), np.zeros(3))
+    with pytest.raises(ag.InputError, match=r"step\(\): R"):
+        gov.step(2.0, 2.0 * np.eye(3), np.zeros(3))
+    with pytest.raises(ag.InputError, match=r"step\(\): omega_b"):
+        gov.step(2.0, np.eye(3), np.array([np.nan, 0.0, 0.0]))

@@ -21,7 +21,7 @@ if _typing.TYPE_CHECKING:  # what mypy and IDEs see; at run time __getattr__ bel
     from ._api import check, predict, reach, run
     from ._plan import PlannedSlew, plan_slew
     from ._core import (Cone, Error, Governor, GovernorOutput, InputError, Mission,
-                        NumericalError, QuaternionPid, RigidBody, VerificationFailure, distance,
+                        NumericalError, PlannedGovernor, PlannedStep, QuaternionPid, RigidBody, VerificationFailure, distance,
                         expm, hat, is_rotation, keep_in_cone, keep_out_cone, logm, pd_torque,
                         phi, project_to_so3, quat_conjugate, quat_from_axis_angle,
                         quat_multiply, quat_to_rotation, rotation_to_quat, vee)
@@ -32,7 +32,7 @@ if _typing.TYPE_CHECKING:  # what mypy and IDEs see; at run time __getattr__ bel
 # Public name -> (submodule, attribute). One table: __all__, __dir__ and __getattr__ use it.
 _CORE_NAMES = (
     "Cone", "Error", "Governor", "GovernorOutput", "InputError", "Mission", "NumericalError",
-    "QuaternionPid", "RigidBody", "VerificationFailure", "distance", "expm", "hat",
+    "PlannedGovernor", "PlannedStep", "QuaternionPid", "RigidBody", "VerificationFailure", "distance", "expm", "hat",
     "is_rotation", "keep_in_cone", "keep_out_cone", "logm", "pd_torque", "phi",
     "project_to_so3", "quat_conjugate", "quat_from_axis_angle", "quat_multiply",
     "quat_to_rotation", "rotation_to_quat", "vee",

@@ -53,11 +53,29 @@ def test_the_planned_mode_refuses_the_pet_erg_table_at_its_key(tmp_path):
         ag.run(path)
 
 
-def test_the_planned_mode_refuses_a_moving_start_at_its_key(tmp_path):
-    text = EXAMPLE.read_text().replace("omega_b = [0.0, 0.0, 0.0]", "omega_b = [0.0, 0.0, 0.01]")
+def test_a_moving_start_is_a_start_off_the_plan_that_the_clock_waits_out(tmp_path):
+    # The plan starts at rest at R_0; the body turns at 0.005 rad/s: the clock waits at ṡ = 0
+    # (the hold damps the rate) until the level fits a moving clock, then flies the plan; the
+    # gains derived soft enough that the hold brakes the start without saturating.
+    text = EXAMPLE.read_text().replace("omega_b = [0.0, 0.0, 0.0]", "omega_b = [0.0, 0.0, -0.005]")
     path = tmp_path / "moving.toml"
     path.write_text(text)
-    with pytest.raises(ag.InputError, match=r"moving\.toml:\d+:\d+: initial\.omega_b: .*rest"):
+    s = ag.run(path).summary
+    assert s["outcome"] == "converged"
+    assert s["constraints_satisfied"]
+    assert s["planned"]["time_held"] > 0.0
+    assert s["planned"]["limited_by_initial_rate"]
+    assert s["planned"]["saturated_commands"] == 0
+
+
+def test_the_planned_mode_refuses_a_schedule_at_its_key(tmp_path):
+    text = EXAMPLE.read_text().replace(
+        "attitude = { axis = [0.0, 0.0, 1.0], angle_deg = 170.0 }",
+        "schedule = [{ t = 0.0, attitude = { axis = [0.0, 0.0, 1.0], angle_deg = 10.0 } },"
+        " { t = 50.0, attitude = { axis = [0.0, 0.0, 1.0], angle_deg = 170.0 } }]")
+    path = tmp_path / "schedule.toml"
+    path.write_text(text)
+    with pytest.raises(ag.InputError, match=r"schedule\.toml:\d+:\d+: desired\.schedule: .*planned.*one rest-to-rest slew"):
         ag.run(path)
 
 

@@ -34,7 +34,8 @@ double ProgressClock::sigma_at(double t) const noexcept {
 void PlannedGovernor::saturate(const lie::Vec3& law_b, PlannedOutput& o) const noexcept {
   const double norm = law_b.norm();
   o.demand_ratio = norm / params_.tau_max;
-  o.tau_b = o.demand_ratio > 1.0 ? lie::Vec3(law_b * (params_.tau_max / norm)) : law_b;
+  // Scaled a few ulps inside the bound, so that the rounded norm never exceeds τ_max.
+  o.tau_b = o.demand_ratio > 1.0 ? lie::Vec3(law_b * ((1.0 - 4e-16) * params_.tau_max / norm)) : law_b;
 }
 
 PlannedGovernor::PlannedGovernor(const SlewPlan& plan, std::span<const ConeConstraint> cones,

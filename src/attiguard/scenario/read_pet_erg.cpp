@@ -392,7 +392,7 @@ void check_planned(const TableReader& root, const sim::PetErgScenario& sc) {
     root.fail("erg", "[erg] sets the PET-ERG's reference governor; governor = \"planned\" does not "
                      "use it (remove it, or set governor = \"pet\")");
   }
-  if (const auto refusal = sim::slew_refusal(sc)) {
+  if (const auto refusal = sim::slew_refusal(sc, sim::SlewStart::any_rate)) {
     const TableReader table = root.table(refusal->table);
     if (table.has(refusal->key)) table.fail(refusal->key, "governor = \"planned\": " + refusal->message);
     table.fail_here("governor = \"planned\": " + refusal->message);

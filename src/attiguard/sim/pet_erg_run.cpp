@@ -442,6 +442,7 @@ nlohmann::json planned_json(const PetErgResult& r) {
           {"natural_frequency", f.natural_frequency},
           {"limited_by_loop_period", f.limited_by_loop_period},
           {"limited_by_sensors", f.limited_by_sensors},
+          {"limited_by_initial_rate", f.limited_by_initial_rate},
           {"tau_max", f.tau_max},
           {"sampling_period", f.sample_period},
           {"epsilon", f.epsilon},

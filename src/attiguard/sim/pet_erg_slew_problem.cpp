@@ -5,13 +5,13 @@
 
 namespace attiguard::sim {
 
-std::optional<SlewRefusal> slew_refusal(const PetErgScenario& sc) {
+std::optional<SlewRefusal> slew_refusal(const PetErgScenario& sc, SlewStart start) {
   if (sc.desired.size() != 1) {
     return SlewRefusal{"desired", "schedule",
                        "the planner plans one rest-to-rest slew; this schedule has " +
                            std::to_string(sc.desired.size()) + " attitudes"};
   }
-  if (sc.omega0_b.norm() > 0.0) {
+  if (start == SlewStart::at_rest && sc.omega0_b.norm() > 0.0) {
     return SlewRefusal{"initial", "omega_b",
                        "the planner plans a rest-to-rest slew: the initial rate must be zero"};
   }
@@ -22,8 +22,8 @@ std::optional<SlewRefusal> slew_refusal(const PetErgScenario& sc) {
   return std::nullopt;
 }
 
-plan::SlewProblem slew_problem(const PetErgScenario& sc) {
-  if (const auto refusal = slew_refusal(sc)) {
+plan::SlewProblem slew_problem(const PetErgScenario& sc, SlewStart start) {
+  if (const auto refusal = slew_refusal(sc, start)) {
     throw SetupError(refusal->table + "." + refusal->key + ": " + refusal->message);
   }
   plan::SlewProblem p;

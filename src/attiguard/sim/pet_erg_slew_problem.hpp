@@ -20,13 +20,24 @@ struct SlewRefusal {
   std::string message;  ///< one line
 };
 
-/// Why `sc` is no single rest-to-rest slew (a schedule of several attitudes, a non-zero initial
-/// rate, a target equal to the start), or nullopt (docs/slew-planner.md, "Failures").
-[[nodiscard]] std::optional<SlewRefusal> slew_refusal(const PetErgScenario& sc);
+/// What the start may be.
+enum class SlewStart {
+  at_rest,  ///< `attiguard plan`: the plan is the whole slew, from rest
+  /// governor = "planned": the plan starts at rest at R_0 and a non-zero ω_0 is a start off the
+  /// plan, which the clock waits out (docs/pet-erg.md, section 16.1, "No deadlock")
+  any_rate,
+};
 
-/// The planner's problem of `sc` (docs/slew-planner.md, "The problem"). Throws SetupError with
-/// slew_refusal's message when there is one.
-[[nodiscard]] plan::SlewProblem slew_problem(const PetErgScenario& sc);
+/// Why `sc` is no single rest-to-rest slew (a schedule of several attitudes, a non-zero initial
+/// rate when `start` is at_rest, a target equal to the start), or nullopt (docs/slew-planner.md,
+/// "Failures").
+[[nodiscard]] std::optional<SlewRefusal> slew_refusal(const PetErgScenario& sc,
+                                                      SlewStart start = SlewStart::at_rest);
+
+/// The planner's problem of `sc` (docs/slew-planner.md, "The problem"): from R_0 at rest. Throws
+/// SetupError with slew_refusal's message when there is one.
+[[nodiscard]] plan::SlewProblem slew_problem(const PetErgScenario& sc,
+                                             SlewStart start = SlewStart::at_rest);
 
 /// The planner's options of `sc` (`[plan] intervals`; docs/slew-planner.md, "Options").
 [[nodiscard]] plan::PlannerOptions planner_options(const PetErgScenario& sc);

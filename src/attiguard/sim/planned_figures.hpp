@@ -18,6 +18,7 @@ struct PlannedFigures {
   double natural_frequency{0.0};   ///< ω_n of the derived gains [rad/s] (0 when given)
   bool limited_by_loop_period{false};  ///< the loop-period caps lowered ω_n
   bool limited_by_sensors{false};      ///< the sensors' errors lowered ω_n
+  bool limited_by_initial_rate{false}; ///< the initial rate lowered ω_n
   double cone_margin{0.0};         ///< the plan's cone margin [rad]
   bool cone_margin_derived{false};
   double torque_headroom{0.0};     ///< the plan's torque headroom (fraction of its torque limit)

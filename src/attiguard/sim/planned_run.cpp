@@ -41,19 +41,30 @@ constexpr double kNoiseShare = 0.1;         ///< k_Ω e_ω + k_R e_θ ≤ kNoise
 constexpr double kHeadroomBase = 0.05;      ///< the derived headroom without sensor errors
 constexpr double kHeadroomNoise = 3.0;      ///< … plus this many times the sensors' torque share
 constexpr double kHeadroomCap = 0.5;
+constexpr double kStartShare = 0.5;         ///< k_Ω ‖ω_0‖ ≤ kStartShare τ_plan
+
+/// The sensors' attitude and rate errors the derivation assumes [rad], [rad/s]: the declared
+/// bias bounds of section 13 when larger than the biases, plus the noises.
+double attitude_error(const PetErgScenario& sc) {
+  const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
+  return std::max(s.attitude_bias_b.norm(), sc.imperfections.attitude_bias_bound) + s.attitude_noise;
+}
+double rate_error(const PetErgScenario& sc) {
+  const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
+  return std::max(s.rate_bias_b.norm(), sc.imperfections.rate_bias_bound) + s.rate_noise;
+}
 
 /// The torque the tracking law spends on the sensors' errors and the quantisation at the gains
 /// (k_Ω e_ω + k_R e_θ + q√3/2) [N·m] (docs/pet-erg.md, section 16.2, "Defaults").
 double sensor_torque(const PetErgScenario& sc, const control::TrackingGains& g) {
   const PetErgImperfections& im = sc.imperfections;
-  return g.k_Omega * im.sensor.rate_error_bound() + g.k_R * im.sensor.attitude_error_bound() +
-         0.5 * std::sqrt(3.0) * im.torque_quantum;
+  return g.k_Omega * rate_error(sc) + g.k_R * attitude_error(sc) + 0.5 * std::sqrt(3.0) * im.torque_quantum;
 }
 
 /// The largest ω_n with J_max(1.6 ω_n e_ω + ω_n² e_θ) ≤ kNoiseShare τ_plan (+∞ without errors).
 double noise_bandwidth(const PetErgScenario& sc, double J_max, double plan_torque) {
-  const double A = J_max * sc.imperfections.sensor.attitude_error_bound();
-  const double B = 2.0 * kDampingRatio * J_max * sc.imperfections.sensor.rate_error_bound();
+  const double A = J_max * attitude_error(sc);
+  const double B = 2.0 * kDampingRatio * J_max * rate_error(sc);
   const double C = kNoiseShare * plan_torque;
   if (A <= 0.0 && B <= 0.0) return std::numeric_limits<double>::infinity();
   if (A <= 0.0) return C / B;
@@ -80,6 +91,14 @@ void derive_gains(const PetErgScenario& sc, double T_bb, double h, double plan_t
   const double noise_cap = noise_bandwidth(sc, J_max, plan_torque);
   f.limited_by_sensors = noise_cap < omega_n;
   omega_n = std::min(omega_n, noise_cap);
+  // A start turning at ω_0 (off the plan, which starts at rest): the damping torque k_Ω ‖ω_0‖ at
+  // most half the plan's torque, so that the hold brakes it without saturating.
+  const double w0 = sc.omega0_b.norm();
+  if (w0 > 0.0) {
+    const double start_cap = kStartShare * plan_torque / (2.0 * kDampingRatio * J_max * w0);
+    f.limited_by_initial_rate = start_cap < omega_n;
+    omega_n = std::min(omega_n, start_cap);
+  }
   f.natural_frequency = omega_n;
   f.gains_derived = true;
   f.gains.k_R = sc.derived.kp_derived ? J_max * omega_n * omega_n : sc.params.gains.kp;
@@ -90,8 +109,7 @@ void derive_gains(const PetErgScenario& sc, double T_bb, double h, double plan_t
 /// tracking law correct (2 h τ / k_R) plus the attitude sensor's error, within [0.5°, 5°].
 double derived_cone_margin(const PetErgScenario& sc, const plan::SlewProblem& p,
                            const control::TrackingGains& g) {
-  const double m = 2.0 * p.torque_headroom * p.tau_max / g.k_R +
-                   sc.imperfections.sensor.attitude_error_bound();
+  const double m = 2.0 * p.torque_headroom * p.tau_max / g.k_R + attitude_error(sc);
   return std::clamp(m, kMarginFloor, kMarginCap);
 }
 
@@ -109,7 +127,7 @@ void set_integration_step(const PlannedFigures& f, const Mat3& J, PetErgScenario
 PlannedSetup planned_setup(const PetErgScenario& sc) {
   PlannedSetup s;
   s.run = sc;
-  s.problem = slew_problem(sc);
+  s.problem = slew_problem(sc, SlewStart::any_rate);
   PlannedFigures& f = s.figures;
   f.plan_torque_limit = s.problem.tau_max;
   governor::CraftScales craft = craft_scales(sc);
@@ -162,7 +180,8 @@ std::string planned_report(const PlannedSetup& setup) {
   if (f.gains_derived) {
     out += "  natural frequency " + four_digits(f.natural_frequency) + " rad/s" +
            (f.limited_by_loop_period ? ", lowered to the loop period's caps" : "") +
-           (f.limited_by_sensors ? ", lowered for the sensors' errors" : "") + "\n";
+           (f.limited_by_sensors ? ", lowered for the sensors' errors" : "") +
+           (f.limited_by_initial_rate ? ", lowered for the initial rate" : "") + "\n";
   }
   out += "  plan.torque_headroom = " + four_digits(f.torque_headroom) + " of " +
          four_digits(f.plan_torque_limit) + " N m" + mark(f.torque_headroom_derived);

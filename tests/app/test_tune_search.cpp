@@ -17,6 +17,7 @@
 #include "attiguard/scenario/document_edit.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/governor/default_gains.hpp"
+#include "attiguard/sim/planned_run.hpp"
 
 namespace attiguard::app {
 namespace {
@@ -177,6 +178,34 @@ TEST(TuneSearch, DefaultSpaceIsCentredOnTheCraftsDerivedValuesAndScaledByThem) {
   const auto q = default_tune_parameters(strong);
   EXPECT_NEAR(q[0].min / p[0].min, 1e3, 1e-9);
   EXPECT_NEAR(q[2].min / p[2].min, 1.0 / std::sqrt(1e3), 1e-9);
+}
+
+// governor = "planned" (docs/pet-erg.md, section 16.2): the tracking gains and the plan's
+// headroom and cone margin, centred on what the planned mode derives from the craft (the file's
+// values set aside) and scaled like the craft: a weaker twin (
+// τ_max × 10⁻³: the slew 31.6× slower) gets gains × 10⁻³, the same headroom and margin. A short search
+// finds an admissible point within 1.3× the eigenaxis bang-bang time.
+TEST(TuneSearch, ThePlannedModeSearchesItsGainsHeadroomAndMarginAroundItsDerivedValues) {
+  const scenario::Document doc = source_file("examples/pet_erg_slew170_planned.toml");
+  const auto p = default_tune_parameters(doc);
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p[0].key, "control.kp");
+  EXPECT_EQ(p[1].key, "control.kd");
+  EXPECT_EQ(p[2].key, "plan.torque_headroom");
+  EXPECT_EQ(p[3].key, "plan.cone_margin_deg");
+  const sim::PlannedFigures f = sim::planned_setup(scenario::parse_pet_erg(doc)).figures;
+  EXPECT_NEAR(std::sqrt(p[0].min * p[0].max), f.gains.k_R, 1e-12 * f.gains.k_R);
+  EXPECT_NEAR(std::sqrt(p[1].min * p[1].max), f.gains.k_Omega, 1e-12 * f.gains.k_Omega);
+  scenario::Document small = doc;
+  scenario::set_number(small, "control.tau_max", 0.5e-3);
+  const auto q = default_tune_parameters(small);
+  EXPECT_NEAR(q[0].min / p[0].min, 1e-3, 1e-12);  // k_R = J_max ω_n², ω_n ∝ 1/T_bb ∝ √τ
+  EXPECT_NEAR(q[2].min, p[2].min, 1e-12);         // the headroom and the margin: dimensionless
+  EXPECT_NEAR(q[3].min, p[3].min, 1e-9 * p[3].min);
+  const TuneResult r = tune_search(doc, settings(p, 12, 1, "planned"));
+  ASSERT_TRUE(r.best.has_value());
+  ASSERT_TRUE(r.eigenaxis_bang_bang_time.has_value());
+  EXPECT_LE(*r.points[*r.best].convergence_time, 1.3 * *r.eigenaxis_bang_bang_time);
 }
 
 TEST(TuneSearch, BestOnABoundIsReported) {

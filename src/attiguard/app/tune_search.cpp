@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <charconv>
+#include <numbers>
 
 #include "attiguard/app/kinds.hpp"
 #include "attiguard/app/tune_batch.hpp"
@@ -14,6 +15,7 @@
 #include "attiguard/scenario/document_edit.hpp"
 #include "attiguard/governor/default_gains.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
+#include "attiguard/sim/planned_run.hpp"
 
 namespace attiguard::app {
 
@@ -83,6 +85,26 @@ nlohmann::json point_json(const std::vector<TuneParameter>& parameters, const Tu
 
 }  // namespace
 
+namespace {
+
+/// governor = "planned": k_R, k_Ω, the plan's headroom and cone margin around the values the
+/// planned mode derives from the craft alone (the file's kp, kd, [plan] values set aside).
+std::vector<TuneParameter> planned_tune_parameters(const sim::PetErgScenario& given) {
+  sim::PetErgScenario sc = given;
+  sc.derived.kp_derived = sc.derived.kd_derived = true;
+  sc.plan.torque_headroom_given = sc.plan.cone_margin_given = false;
+  const sim::PlannedFigures f = sim::planned_setup(sc).figures;
+  const PlannedTuneSpaceConstants k;
+  const double margin_deg = f.cone_margin * 180.0 / std::numbers::pi;
+  return {{"control.kp", f.gains.k_R / k.stiffness, f.gains.k_R * k.stiffness},
+          {"control.kd", f.gains.k_Omega / k.damping, f.gains.k_Omega * k.damping},
+          {"plan.torque_headroom", std::max(0.01, f.torque_headroom / k.headroom),
+           std::min(0.6, f.torque_headroom * k.headroom)},
+          {"plan.cone_margin_deg", margin_deg / k.margin, std::min(20.0, margin_deg * k.margin)}};
+}
+
+}  // namespace
+
 std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal) {
   if (scenario::scenario_kind(nominal) != "pet_erg") {
     throw InputError(nominal.path.string() + ": kind: attiguard tune searches the gains of a "
@@ -91,6 +113,7 @@ std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nom
   // Centred on the values derived from the craft alone (docs/pet-erg.md, section 8), whatever
   // the file gives, and scaled by them: each range is a fixed log-range of a dimensionless group.
   const sim::PetErgScenario sc = scenario::parse_pet_erg(nominal);
+  if (sc.params.mode == governor::GovernorMode::planned) return planned_tune_parameters(sc);
   governor::DerivedGovernorValues d;
   try {
     d = governor::derive_governor_values(sim::craft_scales(sc), {});

@@ -82,9 +82,20 @@ struct TuneSpaceConstants {
   double sampling_period{10.0}; ///< T_s: T_s ω_n in [0.025, 2.5] (not below the control period)
 };
 
+/// The log-ranges of the planned mode's search space (docs/pet-erg.md, sections 15 and 16.2):
+/// each value ×/÷ its factor around what the mode derives from the craft.
+struct PlannedTuneSpaceConstants {
+  double stiffness{10.0};  ///< k_R: ω_n ×/÷ √10
+  double damping{3.0};     ///< k_Ω
+  double headroom{3.0};    ///< the plan's torque headroom, within [0.01, 0.6]
+  double margin{3.0};      ///< the plan's cone margin, at most 20°
+};
+
 /// Default search space, centred on the values governor::derive_governor_values derives from the
 /// craft alone (whatever the file gives) and scaled by TuneSpaceConstants (docs/pet-erg.md,
-/// sections 8 and 15). Throws InputError when the scenario is not pet_erg.
+/// sections 8 and 15); with governor = "planned", the tracking gains and the plan's headroom and
+/// cone margin, centred on what the planned mode derives (docs/pet-erg.md, section 16.2) and
+/// scaled by PlannedTuneSpaceConstants. Throws InputError when the scenario is not pet_erg.
 [[nodiscard]] std::vector<TuneParameter> default_tune_parameters(const scenario::Document& nominal);
 
 /// The keys whose value lies within `fraction` of its log-range from a bound (docs/pet-erg.md,

@@ -169,11 +169,13 @@ py::tuple run_document(const py::object& source, const std::optional<std::string
   return py::make_tuple(std::string(handler.name), summary.dump(), rows.to_dict());
 }
 
-/// Validates a scenario without running it; returns its kind.
+/// Validates a scenario without running it, as `attiguard check` (its report too: the planned
+/// mode's set-up refusals are found there); returns its kind.
 std::string check_document(const py::object& source) {
   const scenario::Document doc = document_of(source);
   const app::KindHandler& handler = app::handler_for(doc);
   handler.check(doc);
+  if (handler.check_report != nullptr) (void)handler.check_report(doc);
   return std::string(handler.name);
 }
 

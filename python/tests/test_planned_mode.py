@@ -130,3 +130,25 @@ def test_the_planned_governor_refuses_what_the_cli_refuses(tmp_path):
         gov.step(2.0, 2.0 * np.eye(3), np.zeros(3))
     with pytest.raises(ag.InputError, match=r"step\(\): omega_b"):
         gov.step(2.0, np.eye(3), np.array([np.nan, 0.0, 0.0]))
+
+
+def test_a_control_period_longer_than_a_tenth_of_the_plan_is_refused_at_its_key(tmp_path):
+    text = EXAMPLE.read_text().replace("tau_max = 0.5                          # N m\n",
+                                       "tau_max = 0.5                          # N m\ncontrol_period = 40.0\n")
+    path = tmp_path / "slow_loop.toml"
+    path.write_text(text)
+    with pytest.raises(ag.InputError,
+                       match=r"slow_loop\.toml:\d+:\d+: control\.control_period: 40 s leaves 1 control instants"):
+        ag.run(path)
+    with pytest.raises(ag.InputError, match=r"control\.control_period"):
+        ag.check(path)
+
+
+def test_a_run_shorter_than_its_plan_says_so(tmp_path):
+    text = EXAMPLE.read_text().replace("duration = 150.0", "duration = 20.0")
+    path = tmp_path / "short.toml"
+    path.write_text(text)
+    s = ag.run(path).summary
+    assert s["outcome"] == "not_converged_by_end"
+    assert "duration is shorter than the plan" in s["outcome_reason"]
+    assert s["constraints_satisfied"]

@@ -407,6 +407,44 @@ def _reset_governor():
     return g
 
 
+_PLANNED_TEXT = '''kind = "pet_erg"
+name = "validation_planned"
+governor = "planned"
+[body]
+inertia = [1.0, 2.0, 3.0]
+[desired]
+attitude = { axis = [0.0, 0.0, 1.0], angle_deg = 60.0 }
+[control]
+tau_max = 1.0
+[plan]
+intervals = 8
+[simulation]
+duration = 10.0
+output_interval = 1.0
+'''
+_PLANNED_PATH: list[str] = []
+
+
+def _planned_path() -> str:
+    """A small planned scenario (a 60 deg slew, no cone, 8 intervals: planned in milliseconds)."""
+    if not _PLANNED_PATH:
+        import tempfile
+
+        d = tempfile.mkdtemp(prefix="attiguard_validation_")
+        path = Path(d) / "planned.toml"
+        path.write_text(_PLANNED_TEXT)
+        _PLANNED_PATH.append(str(path))
+    return _PLANNED_PATH[0]
+
+
+def _reset_planned():
+    import attiguard as ag
+
+    g = ag.PlannedGovernor.from_scenario(_planned_path())
+    g.reset(0.0)
+    return g
+
+
 def _cone():
     import attiguard as ag
 
@@ -512,6 +550,13 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
     "Governor.from_scenario": (_method(lambda: _fn("Governor")(), "from_scenario"),
                                {"path": Arg(_const(str(REPO / "examples" / "pet_erg_paper.toml")),
                                             hostile_path)}, True),
+    "PlannedGovernor.from_scenario": (_method(lambda: _fn("PlannedGovernor")(), "from_scenario"),
+                                      {"path": Arg(lambda rng: _planned_path(), hostile_path)}, True),
+    "PlannedGovernor.reset": (_method(lambda: _fn("PlannedGovernor")().from_scenario(_planned_path()), "reset"),
+                              {"t0": Arg(lambda rng: rng.uniform(-10, 10), hostile_real)}, True),
+    "PlannedGovernor.step": (_method(_reset_planned, "step"),
+                             {"t": Arg(lambda rng: rng.uniform(0.0, 10.0), hostile_real), "R": ROT(),
+                              "omega_b": VEC()}, True),
     "Governor.reset": (_method(_governor, "reset"),
                        {"t0": Arg(lambda rng: rng.uniform(-10, 10), hostile_real), "R_g0": ROT()}, True),
     "Governor.step": (_method(_reset_governor, "step"),

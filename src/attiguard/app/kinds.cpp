@@ -82,9 +82,16 @@ nlohmann::json run_with_sink(const RunOptions& options,
 std::string pet_erg_check_report(const Document& doc) {
   const sim::PetErgScenario sc = scenario::parse_pet_erg(doc);
   // The planned mode plans at set-up: `check` plans and reports what the run would fly with.
-  if (sc.params.mode == governor::GovernorMode::planned) return sim::planned_report(sim::planned_setup(sc));
+  if (sc.params.mode == governor::GovernorMode::planned) {
+    try {
+      return sim::planned_report(sim::planned_setup(sc));
+    } catch (const sim::PlannedSetupRefusal& e) {
+      scenario::fail_in_table(doc, e.table(), e.key(), e.message());
+    }
+  }
   return sim::derived_values_report(sim::governor_values(sc));
 }
+
 
 /// `check`'s report of a waypoint scenario: the mission prediction (docs/waypoint.md, "Prediction").
 std::string waypoint_check_report(const Document& doc) {
@@ -105,6 +112,15 @@ nlohmann::json run_kind(const Document& doc, const RunOptions& options) {
   const auto config = Parse(doc);
   return run_with_sink(options,
                        [&](io::RowSink& rows) { return Summarize(config, Simulate(config, rows)); });
+}
+
+/// `run` of kind pet_erg: run_kind, with the planned mode's set-up refusals located in the file.
+nlohmann::json run_pet_erg(const Document& doc, const RunOptions& options) {
+  try {
+    return run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>(doc, options);
+  } catch (const sim::PlannedSetupRefusal& e) {
+    scenario::fail_in_table(doc, e.table(), e.key(), e.message());
+  }
 }
 
 /// `run` of kind mission: both flights' results are written even when one failed numerically;
@@ -138,8 +154,7 @@ constexpr std::array<KindHandler, 5> registry{{
     {"pet_erg",
      "constrained attitude control: PD law [PET-ERG eq. (3)] with [PET-ERG eqs. (5)-(6)], the ERG [PET-ERG eq. (4)], or none",
      &check_kind<&scenario::parse_pet_erg>,
-     &run_kind<&scenario::parse_pet_erg, &sim::record_pet_erg, &sim::pet_erg_summary>,
-     &pet_erg_outcome_line, &pet_erg_numerical_hint, &pet_erg_check_report},
+     &run_pet_erg, &pet_erg_outcome_line, &pet_erg_numerical_hint, &pet_erg_check_report},
     {"waypoint",
      "waypoint tracking with one main thruster, wheels and six RCT (align/accelerate/coast/flip/"
      "decelerate/fine state machine)",

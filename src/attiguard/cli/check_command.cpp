@@ -2,6 +2,7 @@
 /// `attiguard check SCENARIO`: validation without running.
 
 #include <iostream>
+#include <string>
 
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/cli/commands.hpp"
@@ -23,8 +24,9 @@ void check_command(const std::filesystem::path& scenario_path) {
   }
   const app::KindHandler& handler = app::handler_for(doc);
   handler.check(doc);
-  std::cout << "OK: " << scenario_path.string() << " (" << handler.name << ")\n";
-  if (handler.check_report != nullptr) std::cout << handler.check_report(doc);
+  // The report first: it may refuse what only the set-up finds (the planned mode plans).
+  const std::string report = handler.check_report != nullptr ? handler.check_report(doc) : std::string();
+  std::cout << "OK: " << scenario_path.string() << " (" << handler.name << ")\n" << report;
 }
 
 }  // namespace attiguard::cli

@@ -254,6 +254,11 @@ nlohmann::json robust_json(const PetErgScenario& sc, const PetErgResult& r) {
 /// the plan's end, with the level and thresholds of the last choice, or the plan flown to its
 /// end and the attitude not settled.
 std::string planned_reason(const PlannedFigures& f, const std::string& error) {
+  if (f.final_progress < f.plan.duration && f.final_rate > 0.0) {
+    return "the run ended with the plan's clock still running (sigma = " + four_digits(f.final_progress) +
+           " of " + four_digits(f.plan.duration) + " s, s_dot = " + four_digits(f.final_rate) +
+           "): [simulation] duration is shorter than the plan; " + error;
+  }
   if (f.final_progress < f.plan.duration) {
     return "the plan's clock stopped at sigma = " + four_digits(f.final_progress) + " of " +
            four_digits(f.plan.duration) + " s (held " + four_digits(f.time_held) +
@@ -453,6 +458,7 @@ nlohmann::json planned_json(const PetErgResult& r) {
           {"time_held", f.time_held},
           {"progress_end_time", finite_or_null(f.progress_end_time >= 0.0 ? f.progress_end_time : NAN)},
           {"final_progress", f.final_progress},
+          {"final_rate", f.final_rate},
           {"max_torque_bound_ratio", f.max_torque_bound_ratio},
           {"max_demand_ratio", f.max_demand_ratio},
           {"saturated_commands", f.saturated_commands},

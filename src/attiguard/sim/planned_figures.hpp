@@ -34,6 +34,7 @@ struct PlannedFigures {
   double time_held{0.0};           ///< time with ṡ = 0 before σ reached T_p [s]
   double progress_end_time{-1.0};  ///< first time σ = T_p (−1: never) [s]
   double final_progress{0.0};      ///< σ at the end [s]
+  double final_rate{0.0};          ///< ṡ at the end
   double max_torque_bound_ratio{0.0};  ///< max over the choices of the bound / τ_max
   double max_demand_ratio{0.0};    ///< max ‖τ_law‖/τ_max the law asked for (> 1: saturated)
   long saturated_commands{0};      ///< control instants (flight loop) or observed instants

@@ -35,6 +35,7 @@ constexpr double kMarginFloor = 0.5 * std::numbers::pi / 180.0;  ///< smallest d
 constexpr double kMarginCap = 5.0 * std::numbers::pi / 180.0;    ///< largest derived margin
 constexpr double kEpsilon = 0.05;           ///< ε of the thresholds
 constexpr double kSamplesPerPlan = 200.0;   ///< T_s = T_p / 200 in the continuous loop
+constexpr double kMinControlInstants = 10.0;  ///< control instants over the plan, at least
 constexpr int kPlannedIntervals = 64;       ///< N of the plan when [plan] intervals is left out
 constexpr double kStepsPerPeriod = 20.0;    ///< derived step ≤ 1 / (20 ω_fast)
 constexpr double kNoiseShare = 0.1;         ///< k_Ω e_ω + k_R e_θ ≤ kNoiseShare τ_plan
@@ -157,6 +158,13 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   s.planned = plan::plan_slew(s.problem, options);
   f.plan = s.planned.report;
   const double T_p = s.planned.plan.duration();
+  if (sc.control_period > T_p / kMinControlInstants) {
+    throw PlannedSetupRefusal("control", "control_period", four_digits(sc.control_period) + " s leaves " +
+                     std::to_string(static_cast<long>(T_p / sc.control_period)) +
+                     " control instants over the plan's " + four_digits(T_p) + " s; the planned mode "
+                     "needs at least " + std::to_string(static_cast<int>(kMinControlInstants)) +
+                     " (a control period of at most " + four_digits(T_p / kMinControlInstants) + " s)");
+  }
   f.sample_period = sc.control_period > 0.0 ? sc.control_period : T_p / kSamplesPerPlan;
   f.epsilon = kEpsilon;
   s.params = governor::PlannedGovernorParams{f.gains, f.tau_max, f.sample_period, f.epsilon,
@@ -227,6 +235,7 @@ class PlannedFlight {
     if (sc_.control_period == 0.0) demanded(p);
     if (p.sigma >= gov_.progress().plan().duration() && f.progress_end_time < 0.0) f.progress_end_time = t;
     f.final_progress = p.sigma;
+    f.final_rate = p.rate;
   }
 
   /// A choice of ṡ at t at plan time σ, after the previous one at t_prev; `held`: the clock

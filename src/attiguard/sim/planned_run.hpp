@@ -8,12 +8,30 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+
+#include "attiguard/core/errors.hpp"
 
 #include "attiguard/governor/planned_governor.hpp"
 #include "attiguard/plan/slew_planner.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 
 namespace attiguard::sim {
+
+/// A planned scenario refused at set-up at one of its keys (known only once the slew is
+/// planned): the application layer locates it in the file (scenario::fail_in_table).
+class PlannedSetupRefusal : public SetupError {
+ public:
+  PlannedSetupRefusal(std::string table, std::string key, const std::string& message)
+      : SetupError(table + "." + key + ": " + message), table_(std::move(table)), key_(std::move(key)),
+        message_(message) {}
+  [[nodiscard]] const std::string& table() const noexcept { return table_; }
+  [[nodiscard]] const std::string& key() const noexcept { return key_; }
+  [[nodiscard]] const std::string& message() const noexcept { return message_; }
+
+ private:
+  std::string table_, key_, message_;
+};
 
 /// What a planned run flies with (docs/pet-erg.md, section 16.2, "Defaults"): the planner's
 /// problem and plan, the governor's parameters, the figures of the set-up, and the scenario as
@@ -30,7 +48,8 @@ struct PlannedSetup {
 /// Plans the slew of `sc` and derives what the scenario leaves out from the craft
 /// (docs/pet-erg.md, section 16.2, "Defaults"): the tracking gains (ω_n = 10π/T_bb capped by the
 /// loop period, k_R = J_max ω_n², k_Ω = 1.6 J_max ω_n), the plan's cone margin, T_s. Throws
-/// SetupError for a scenario that is no rest-to-rest slew, and the planner's VerificationFailure
+/// SetupError for a scenario that is no single slew, PlannedSetupRefusal for a control period
+/// longer than a tenth of the plan, and the planner's VerificationFailure
 /// (exit 4) or NumericalError (exit 3).
 [[nodiscard]] PlannedSetup planned_setup(const PetErgScenario& sc);
 

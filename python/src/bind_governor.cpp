@@ -217,16 +217,7 @@ class PyGovernor {
   }
 
   GovernorOutput step(double t, const Mat3& R, const Vec3& omega_b, const Mat3& R_d) {
-    if (!started_) {
-      throw InputError(std::string(kLabelStep) + ": call reset(t0, R_g0) before the first step()");
-    }
-    if (!std::isfinite(t)) throw InputError(std::string(kLabelStep) + ": t: must be finite");
-    if (t < last_t_) {
-      std::array<char, 96> buf{};
-      std::snprintf(buf.data(), buf.size(), "%.17g s < %.17g s", t, last_t_);
-      throw InputError(std::string(kLabelStep) + ": t: time went backwards (t = " + buf.data() +
-                       " of the previous call)");
-    }
+    check_step_time(kLabelStep, "reset(t0, R_g0)", started_, t, last_t_);
     const Mat3 R_ok = scenario::checked_rotation_matrix(R, "R", kLabelStep);
     const Vec3 w_ok = scenario::checked_vector3(omega_b, "omega_b", kLabelStep);
     const Mat3 R_d_ok = scenario::checked_rotation_matrix(R_d, "R_d", kLabelStep);

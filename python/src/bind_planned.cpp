@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -65,14 +64,7 @@ class PyPlannedGovernor {
   }
 
   PyPlannedStep step(double t, const Mat3& R, const Vec3& omega_b) {
-    if (!started_) throw InputError(std::string(kLabelStep) + ": call reset(t0) before the first step()");
-    if (!std::isfinite(t)) throw InputError(std::string(kLabelStep) + ": t: must be finite");
-    if (t < last_t_) {
-      std::array<char, 96> buf{};
-      std::snprintf(buf.data(), buf.size(), "%.17g s < %.17g s", t, last_t_);
-      throw InputError(std::string(kLabelStep) + ": t: time went backwards (t = " + buf.data() +
-                       " of the previous call)");
-    }
+    check_step_time(kLabelStep, "reset(t0)", started_, t, last_t_);
     const Mat3 R_ok = scenario::checked_rotation_matrix(R, "R", kLabelStep);
     const Vec3 w_ok = scenario::checked_vector3(omega_b, "omega_b", kLabelStep);
     last_t_ = t;

@@ -2,9 +2,31 @@
 /// @file bindings.hpp
 /// The parts of the Python extension module `attiguard._core` (docs/python.md), one per file.
 
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
 #include <pybind11/pybind11.h>
 
+#include "attiguard/core/errors.hpp"
+
 namespace attiguard::python {
+
+/// The time checks of a flight-loop object's step() (docs/python.md, "Validation"): reset first
+/// (`reset_call` names it), t finite and not before the previous call's `last_t`. Throws
+/// InputError labelled `label`.
+inline void check_step_time(const char* label, const char* reset_call, bool started, double t,
+                            double last_t) {
+  if (!started) throw InputError(std::string(label) + ": call " + reset_call + " before the first step()");
+  if (!std::isfinite(t)) throw InputError(std::string(label) + ": t: must be finite");
+  if (t < last_t) {
+    std::array<char, 96> buf{};
+    std::snprintf(buf.data(), buf.size(), "%.17g s < %.17g s", t, last_t);
+    throw InputError(std::string(label) + ": t: time went backwards (t = " + buf.data() +
+                     " of the previous call)");
+  }
+}
 
 /// attiguard::Error and its subclasses as Python exceptions with the CLI's messages
 /// (docs/conventions.md, "Exit codes").

@@ -421,11 +421,8 @@ TEST(AllocationFree, QuaternionPidStepTrackingATurn) {
                                      << " calls of QuaternionPid::step";
 }
 
-// The planned slew's flight-loop parts (docs/pet-erg.md, section 16): the progress governor's
-// rate at each sampling instant and the tracking law at each control step, flying a plan of a
-// 120 deg slew around a keep-out cone with the plan's clock governed. Set-up (the plan, the
-// governor's tables) is outside the counted window.
-TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
+/// A 120 deg slew with a 25 deg keep-out cone on body +z centred on its path.
+plan::SlewProblem slew_around_a_cone() {
   plan::SlewProblem p;
   p.J_b = Vec3(2.4, 3.1, 3.9).asDiagonal();
   p.tau_max = 1.0;
@@ -434,6 +431,15 @@ TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
   p.R_target = lie::exp(Vec3(0.0, 1.0, 0.0) * (120.0 * std::numbers::pi / 180.0));
   const Vec3 sun = lie::exp(Vec3(0.0, 1.0, 0.0) * (60.0 * std::numbers::pi / 180.0)) * Vec3::UnitZ();
   p.cones.push_back(governor::keep_out_cone(Vec3::UnitZ(), sun, 25.0 * std::numbers::pi / 180.0));
+  return p;
+}
+
+// The planned slew's flight-loop parts (docs/pet-erg.md, section 16): the progress governor's
+// rate at each sampling instant and the tracking law at each control step, flying a plan of a
+// 120 deg slew around a keep-out cone with the plan's clock governed. Set-up (the plan, the
+// governor's tables) is outside the counted window.
+TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
+  const plan::SlewProblem p = slew_around_a_cone();
   const plan::PlannedSlew planned = plan::plan_slew(p);
   const control::TrackingGains gains{0.5, 1.5};
   const double dt = 0.01;
@@ -463,14 +469,7 @@ TEST(AllocationFree, TrackingLawAndProgressGovernorFlyingAPlan) {
 // off the plan by 2 deg. Set-up outside the
 // counted window; also throw-free (noexcept).
 TEST(AllocationFree, PlannedGovernorStepFlyingAPlanWithDelay) {
-  plan::SlewProblem p;
-  p.J_b = Vec3(2.4, 3.1, 3.9).asDiagonal();
-  p.tau_max = 1.0;
-  p.torque_headroom = 0.1;
-  p.cone_margin = 4.0 * std::numbers::pi / 180.0;
-  p.R_target = lie::exp(Vec3(0.0, 1.0, 0.0) * (120.0 * std::numbers::pi / 180.0));
-  const Vec3 sun = lie::exp(Vec3(0.0, 1.0, 0.0) * (60.0 * std::numbers::pi / 180.0)) * Vec3::UnitZ();
-  p.cones.push_back(governor::keep_out_cone(Vec3::UnitZ(), sun, 25.0 * std::numbers::pi / 180.0));
+  const plan::SlewProblem p = slew_around_a_cone();
   const plan::PlannedSlew planned = plan::plan_slew(p);
   const double h = 0.1;
   governor::PlannedGovernor gov(planned.plan, p.cones,

@@ -214,17 +214,22 @@ Flown fly(const PlannedSetup& s, const Vec3& d_b, double h, bool forced, double 
   return out;
 }
 
+/// The slew170 example at 10 Hz sized for a constant disturbance of 1 % τ_max.
+PetErgScenario sized_for_one_percent() {
+  return scenario_of(edited(example_text("pet_erg_slew170_planned.toml"),
+      {{"tau_max = 0.5                          # N m\n",
+        "tau_max = 0.5                          # N m\ncontrol_period = 0.1\n"},
+       {"[simulation]", "[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.005\n"
+                         "\n[simulation]"}}));
+}
+
 // The governed progress does its job: the slew170 example sized for a constant disturbance of
 // 1 % of τ_max (its plan keeps τ_max − d̄ with the derived headroom) meets 10× that disturbance,
 // against the plan's initial torque. The governed clock slows (ṡ < 1), every cone and
 // ‖τ‖ ≤ τ_max are kept and the slew converges; the same flight with the clock forced to ṡ = 1
 // asks for more than τ_max (the test fails if the governor is replaced by ṡ = 1).
 TEST(PlannedRun, AgainstTenTimesTheDisturbanceSizedForTheProgressSlowsAndKeepsTheConstraints) {
-  const PetErgScenario sc = scenario_of(edited(example_text("pet_erg_slew170_planned.toml"),
-      {{"tau_max = 0.5                          # N m\n",
-        "tau_max = 0.5                          # N m\ncontrol_period = 0.1\n"},
-       {"[simulation]", "[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.005\n"
-                         "\n[simulation]"}}));
+  const PetErgScenario sc = sized_for_one_percent();
   const PlannedSetup setup = planned_setup(sc);
   const Vec3 tau0 = setup.planned.plan.evaluate(0.0).tau_b;
   const Vec3 d_b = -10.0 * sc.imperfections.disturbance.bound * tau0.normalized();
@@ -247,11 +252,7 @@ TEST(PlannedRun, AgainstTenTimesTheDisturbanceSizedForTheProgressSlowsAndKeepsTh
 // for a constant disturbance of 1 % τ_max meets 5× that): the governed clock slows and keeps
 // every constraint and converges; forced to ṡ = 1 the law asks for more than τ_max.
 TEST(PlannedRun, WithTheGainsHalvedTheProgressSlowsAndKeepsTheConstraints) {
-  const PetErgScenario sc = scenario_of(edited(example_text("pet_erg_slew170_planned.toml"),
-      {{"tau_max = 0.5                          # N m\n",
-        "tau_max = 0.5                          # N m\ncontrol_period = 0.1\n"},
-       {"[simulation]", "[imperfections]\ndisturbance = \"constant\"\ndisturbance_bound = 0.005\n"
-                         "\n[simulation]"}}));
+  const PetErgScenario sc = sized_for_one_percent();
   const PlannedSetup setup = planned_setup(sc);
   const Vec3 tau0 = setup.planned.plan.evaluate(0.0).tau_b;
   const Vec3 d_b = -5.0 * sc.imperfections.disturbance.bound * tau0.normalized();

@@ -500,16 +500,36 @@ nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& r) 
 
 namespace {
 
+/// The first columns of every pet_erg trajectory (docs/scenario-format.md, "Outputs"): t, R,
+/// ω, the torque applied, R_g (the plan's R_p(σ) in the planned mode) and R_d.
+std::vector<std::string> state_columns() {
+  return {"t",     "q_w",   "q_x",   "q_y",      "q_z",  "omega_x", "omega_y", "omega_z", "tau_x", "tau_y",
+          "tau_z", "tau_norm", "qg_w", "qg_x", "qg_y", "qg_z",    "qd_w",    "qd_x",    "qd_y",  "qd_z"};
+}
+
+/// Writes the cells of state_columns() from `cell` on; returns the next cell.
+std::vector<double>::iterator write_state_cells(std::vector<double>::iterator cell, double t,
+                                                const PetErgState& y, const Mat3& R_d,
+                                                const GovernorOutput& out) {
+  const lie::Quat q = lie::rotation_to_quat(y.R[0]);
+  const lie::Quat qg = lie::rotation_to_quat(out.R_g);
+  const lie::Quat qd = lie::rotation_to_quat(R_d);
+  for (const double v : {t, q(0), q(1), q(2), q(3), y.x(0), y.x(1), y.x(2), out.tau_b(0), out.tau_b(1),
+                         out.tau_b(2), out.tau_b.norm(), qg(0), qg(1), qg(2), qg(3), qd(0), qd(1), qd(2),
+                         qd(3)}) {
+    *cell++ = v;
+  }
+  return cell;
+}
+
 /// The rows of a planned run (docs/scenario-format.md, "pet_erg", "Outputs"): qg is the plan's
 /// attitude R_p(σ), s and s_dot the clock σ and its rate ṡ, gamma_g the cone threshold ahead,
 /// torque_bound the bound on ‖τ‖ of the level set at the last choice, admissible whether that
 /// choice met the thresholds (docs/pet-erg.md, section 16.2).
 PetErgResult record_planned(const PetErgScenario& sc, io::RowSink& rows) {
   const bool has_cones = !sc.cones.empty();
-  std::vector<std::string> columns{
-      "t",       "q_w",     "q_x",     "q_y",      "q_z",  "omega_x", "omega_y", "omega_z",
-      "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w", "qg_x",    "qg_y",    "qg_z",
-      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "s",    "s_dot",   "V"};
+  std::vector<std::string> columns = state_columns();
+  for (const char* name : {"s", "s_dot", "V"}) columns.push_back(name);
   if (has_cones) columns.push_back("gamma_g");
   for (const char* name : {"torque_bound", "admissible", "attitude_error", "reference_error"}) {
     columns.push_back(name);
@@ -520,15 +540,8 @@ PetErgResult record_planned(const PetErgScenario& sc, io::RowSink& rows) {
   long emitted = 0;
   const PlannedRowObserver write_row = [&](double t, const PetErgState& y, const Mat3& R_d,
                                            const GovernorOutput& out, const governor::PlannedOutput& p) {
-    const lie::Quat q = lie::rotation_to_quat(y.R[0]);
-    const lie::Quat qg = lie::rotation_to_quat(out.R_g);
-    const lie::Quat qd = lie::rotation_to_quat(R_d);
-    auto cell = row.begin();
-    for (const double v : {t, q(0), q(1), q(2), q(3), y.x(0), y.x(1), y.x(2), out.tau_b(0), out.tau_b(1),
-                           out.tau_b(2), out.tau_b.norm(), qg(0), qg(1), qg(2), qg(3), qd(0), qd(1), qd(2),
-                           qd(3), p.sigma, p.rate, out.V}) {
-      *cell++ = v;
-    }
+    auto cell = write_state_cells(row.begin(), t, y, R_d, out);
+    for (const double v : {p.sigma, p.rate, out.V}) *cell++ = v;
     if (has_cones) *cell++ = out.gamma_g;
     for (const double v : {p.choice.torque_bound, p.choice.admissible ? 1.0 : 0.0,
                            lie::phi(R_d.transpose() * y.R[0]), lie::phi(R_d.transpose() * out.R_g)}) {
@@ -550,10 +563,8 @@ PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
   // Γ_g only with cones: without one it is +∞ (pointing_threshold.hpp), which no output file
   // holds (docs/scenario-format.md, "Outputs"); one margin column per cone.
   const bool has_cones = !sc.cones.empty();
-  std::vector<std::string> columns{
-      "t",       "q_w",     "q_x",     "q_y",      "q_z",     "omega_x", "omega_y", "omega_z",
-      "tau_x",   "tau_y",   "tau_z",   "tau_norm", "qg_w",    "qg_x",    "qg_y",    "qg_z",
-      "qd_w",    "qd_x",    "qd_y",    "qd_z",     "V",       "gamma_d"};
+  std::vector<std::string> columns = state_columns();
+  for (const char* name : {"V", "gamma_d"}) columns.push_back(name);
   if (has_cones) columns.push_back("gamma_g");
   for (const char* name : {"gamma", "trigger", "attitude_error", "reference_error"}) columns.push_back(name);
   for (std::size_t i = 0; i < sc.cones.size(); ++i) {
@@ -564,15 +575,8 @@ PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows) {
   long emitted = 0;
   const PetErgRowObserver write_row = [&](double t, const PetErgState& y, const Mat3& R_d,
                                           const GovernorOutput& out) {
-    const lie::Quat q = lie::rotation_to_quat(y.R[0]);
-    const lie::Quat qg = lie::rotation_to_quat(out.R_g);
-    const lie::Quat qd = lie::rotation_to_quat(R_d);
-    auto cell = row.begin();
-    for (const double v : {t, q(0), q(1), q(2), q(3), y.x(0), y.x(1), y.x(2), out.tau_b(0), out.tau_b(1),
-                           out.tau_b(2), out.tau_b.norm(), qg(0), qg(1), qg(2), qg(3), qd(0), qd(1), qd(2),
-                           qd(3), out.V, out.gamma_d}) {
-      *cell++ = v;
-    }
+    auto cell = write_state_cells(row.begin(), t, y, R_d, out);
+    for (const double v : {out.V, out.gamma_d}) *cell++ = v;
     if (has_cones) *cell++ = out.gamma_g;
     for (const double v : {out.gamma, out.trigger ? 1.0 : 0.0, lie::phi(R_d.transpose() * y.R[0]),
                            lie::phi(R_d.transpose() * out.R_g)}) {

@@ -39,3 +39,23 @@ def test_twin_is_the_scenario_with_governor_none():
     assert s["governor"] == "none" and s["min_pointing_margin"] < 0.0
     assert s["unconstrained"]["min_pointing_margin"] == s["min_pointing_margin"]
     assert s["constrained"]["min_pointing_margin"] >= 0.0
+
+
+PLANNED = EXAMPLE.with_name("mission_sun_constrained_planned.toml")
+
+
+def test_planned_mission_plans_each_slew_and_costs_less_than_the_pet_erg():
+    """governor = "planned" (docs/mission.md, "Planned slews"): the four slews planned, every
+    logged sample within the cone and tau_max, and a smaller constraint cost than the PET-ERG's
+    against the same unconstrained twin."""
+    res = ag.run(PLANNED)
+    s = res.summary
+    assert s["governor"] == "planned" and s["completed"] and s["constraints_satisfied"]
+    assert [sl["mode"] for sl in s["slews"]] == ["align", "flip", "align", "flip"]
+    assert all(sl["planned"] and sl["convergence_time_over_plan"] <= 1.3 for sl in s["slews"])
+    assert np.all(res["min_margin"] >= 0.0)
+    assert np.all(res["tau_norm"] <= s["tau_max"])
+    assert set(np.unique(res["slew"])) == {-1.0, 0.0, 1.0, 2.0, 3.0}
+    pet = ag.run(EXAMPLE).summary
+    assert s["unconstrained"]["total_time"] == pet["unconstrained"]["total_time"]
+    assert s["time_cost"] < pet["time_cost"]

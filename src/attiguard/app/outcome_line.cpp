@@ -184,6 +184,32 @@ std::string waypoint_outcome_line(const json& summary) {
   return line.str();
 }
 
+namespace {
+
+/// governor = "planned" of kind mission: per slew whether it was planned, its plan's duration and
+/// bang-bang ratio and its convergence over the plan (docs/mission.md, "Planned slews").
+std::string mission_slews_part(const json& summary) {
+  const auto it = summary.is_object() ? summary.find("slews") : summary.end();
+  if (it == summary.end() || !it->is_array() || it->empty()) return {};
+  std::string t = "slews";
+  for (const json& s : *it) {
+    t += (t == "slews" ? ": " : " / ") + text(s, "mode", "?");
+    const auto plan = s.find("plan");
+    const auto T_p = plan != s.end() ? number(*plan, "duration") : std::nullopt;
+    const auto ratio = plan != s.end() ? number(*plan, "ratio") : std::nullopt;
+    if (flag(s, "planned").value_or(false) && T_p && ratio) {
+      t += " planned " + fig(*T_p) + " s (" + fig(*ratio) + "x bang-bang)";
+      const auto over = number(s, "convergence_time_over_plan");
+      t += over ? ", converged at " + fig(*over) + "x" : std::string(", not converged");
+    } else {
+      t += " tracked (too short to plan)";
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
 std::string mission_outcome_line(const json& summary) {
   const std::string word = text(summary, "outcome", "unknown");
   Line line(word);
@@ -194,6 +220,7 @@ std::string mission_outcome_line(const json& summary) {
   const auto tau_max = number(summary, "tau_max");
   if (tau && tau_max && *tau_max > 0.0) line.part("max |tau|/tau_max", *tau / *tau_max);
   constraints_part(line, summary);
+  line.part(mission_slews_part(summary));
   const auto time_cost = number(summary, "time_cost");
   const auto dv_cost = number(summary, "delta_v_cost");
   if (time_cost && dv_cost) {

@@ -60,15 +60,22 @@ sim::MissionScenario parse_mission(const Document& doc) {
   // The governor part: the blocks of kind pet_erg (common_tables.hpp), J from [spacecraft].
   const TableReader root(doc);
   const TableReader control = parse_governor_block(root, sc.params, {"align_tolerance"});
-  if (sc.params.mode == governor::GovernorMode::planned) {
-    root.fail("governor", "\"planned\" flies one planned slew of kind pet_erg; a mission's slews "
-                          "use \"pet\", \"continuous\" or \"none\"");
+  // governor = "planned" plans each slew at its start (docs/mission.md, "Planned slews"); the
+  // PET-ERG's [erg] has no meaning there.
+  const bool planned = sc.params.mode == governor::GovernorMode::planned;
+  if (planned && root.has("erg")) {
+    root.fail("erg", "[erg] sets the PET-ERG's reference governor; governor = \"planned\" does not "
+                     "use it (remove it, or set governor = \"pet\")");
   }
   sc.params.J = sc.waypoint.J;
   sc.align_tolerance = control.number_or("align_tolerance", sc.align_tolerance, NumberRule::positive());
   control.finish();
   sc.cones = parse_cones(root);
-  (void)make_governor(root, "control", sc.params, sc.cones);
+  // The planned mode's hold between slews is the PD law's: its limits and cones are validated as
+  // mode none's (as kind pet_erg does for its planned mode).
+  governor::GovernorParams validated = sc.params;
+  if (planned) validated.mode = governor::GovernorMode::none;
+  (void)make_governor(root, "control", validated, sc.cones);
   check_leg_attitudes(root, sc);
   return sc;
 }

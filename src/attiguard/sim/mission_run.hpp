@@ -8,12 +8,15 @@
 
 
 #include <atomic>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "attiguard/io/row_sink.hpp"
 #include "attiguard/sim/mission_scenario.hpp"
+#include "attiguard/sim/mission_slews.hpp"
 #include "attiguard/sim/waypoint_run.hpp"
 
 namespace attiguard::sim {
@@ -29,6 +32,9 @@ struct MissionResult {
   /// The numerical failure that ended this flight (NumericalError's message), empty if none:
   /// the other flight's results are still reported (docs/mission.md, "Outcome").
   std::string failure;
+  /// governor = "planned": the attitude slews, each planned at its start (docs/mission.md,
+  /// "Planned slews"); empty in the other modes.
+  std::vector<MissionSlew> slews;
   /// Δv of the flight: Σ over waypoints of ∫T/m + ∫Σf_j/m [Waypoint eq. (5)] [m/s].
   [[nodiscard]] double delta_v() const noexcept;
 };
@@ -38,8 +44,14 @@ using MissionObserver = std::function<void(double t, const dynamics::SpacecraftS
                                            const guidance::MissionCommand& cmd,
                                            const governor::GovernorOutput& gov)>;
 
+/// The planned mission's view of a control sample: the observer's, with the slew being flown.
+using PlannedMissionObserver =
+    std::function<void(double t, const dynamics::SpacecraftState& y, const guidance::MissionCommand& cmd,
+                       const governor::GovernorOutput& gov, const MissionSlewState& slew)>;
+
 /// Flies the mission with the governor in `mode` ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
-/// Algorithm 1); `observer` sees each sample with the governor's output. Once `stop` is set and
+/// Algorithm 1; `planned`: each slew planned at its start and flown by the planned mode,
+/// docs/mission.md, "Planned slews"); `observer` sees each sample with the governor's output. Once `stop` is set and
 /// true (the interruption flag of a run that writes files), the flight ends at its next control
 /// step with io::Interrupted, which is never recorded as the flight's failure (docs/mission.md,
 /// "Outcome").
@@ -47,6 +59,12 @@ using MissionObserver = std::function<void(double t, const dynamics::SpacecraftS
                                              governor::GovernorMode mode,
                                              const MissionObserver& observer = {},
                                              const std::atomic<bool>* stop = nullptr);
+
+/// simulate_mission in mode `planned` with the slew being flown at each sample
+/// (docs/mission.md, "Planned slews").
+[[nodiscard]] MissionResult simulate_planned_mission(const MissionScenario& sc,
+                                                     const PlannedMissionObserver& observer = {},
+                                                     const std::atomic<bool>* stop = nullptr);
 
 /// The scenario's own flight and its twin (the other setting of the governor).
 struct MissionFlights {
@@ -58,7 +76,8 @@ struct MissionFlights {
 
 /// Flies the scenario (its trajectory rows emitted into `rows`: t, p_x..p_z, v_x..v_z,
 /// q_w..q_z, omega_x..omega_z, tau_x..tau_z, tau_norm, thrust, mode, waypoint, qg_w..qg_z,
-/// qd_w..qd_z, trigger, min_margin) and its twin ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
+/// qd_w..qd_z, trigger, min_margin; with governor = "planned" also slew, s, s_dot,
+/// docs/mission.md, "Planned slews") and its twin ([PET-ERG eqs. (3)-(6)] on the Waypoint paper's
 /// Algorithm 1). Throws NumericalError when a state or command is not finite, io::Interrupted
 /// at the next control step of either flight once `stop` is set and true.
 [[nodiscard]] MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows,

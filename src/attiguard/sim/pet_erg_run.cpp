@@ -424,7 +424,12 @@ void add_counters(nlohmann::json& j, const PetErgResult& r) {
 /// governor = "planned": the plan, the tracking gains and margins, the progress
 /// (docs/pet-erg.md, section 16.2; docs/scenario-format.md, "pet_erg", "Outputs").
 nlohmann::json planned_json(const PetErgResult& r) {
-  const PlannedFigures& f = *r.planned;
+  return planned_figures_json(*r.planned, r.convergence_time);
+}
+
+}  // namespace
+
+nlohmann::json planned_figures_json(const PlannedFigures& f, double convergence_time) {
   const plan::PlanReport& p = f.plan;
   const double T_p = p.duration;
   nlohmann::json plan = {{"duration", T_p},
@@ -463,9 +468,11 @@ nlohmann::json planned_json(const PetErgResult& r) {
           {"max_demand_ratio", f.max_demand_ratio},
           {"saturated_commands", f.saturated_commands},
           {"convergence_time_over_plan",
-           r.convergence_time >= 0.0 && T_p > 0.0 ? nlohmann::json(r.convergence_time / T_p)
-                                                  : nlohmann::json(nullptr)}};
+           convergence_time >= 0.0 && T_p > 0.0 ? nlohmann::json(convergence_time / T_p)
+                                                : nlohmann::json(nullptr)}};
 }
+
+namespace {
 
 /// The cones [PET-ERG eq. (2b)] (the true constraints), with δ, ζ of their bands.
 nlohmann::json pet_erg_cones_json(const PetErgScenario& sc) {

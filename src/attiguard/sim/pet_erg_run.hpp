@@ -90,6 +90,12 @@ struct PetErgResult {
 /// attitude_error, reference_error, margin_0..: docs/scenario-format.md, "pet_erg", "Outputs").
 [[nodiscard]] PetErgResult record_pet_erg(const PetErgScenario& sc, io::RowSink& rows);
 
+/// summary.json's `planned` object of the planned mode (docs/pet-erg.md, section 16.2,
+/// "Outputs"): the plan, the tracking gains, headroom and cone margin, the clock's figures and
+/// `convergence_time_over_plan` (null when `convergence_time` < 0). Also each slew of a planned
+/// mission (docs/mission.md, "Planned slews").
+[[nodiscard]] nlohmann::json planned_figures_json(const PlannedFigures& f, double convergence_time);
+
 /// The summary.json object of a PET-ERG run (PET-ERG paper, Sec. V figures; keys:
 /// docs/scenario-format.md, section "pet_erg"), without wall_time_s.
 [[nodiscard]] nlohmann::json pet_erg_summary(const PetErgScenario& sc, const PetErgResult& result);

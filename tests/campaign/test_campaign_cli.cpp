@@ -96,6 +96,29 @@ TEST(CampaignCli, RobustMarginsKeepTheConstraintsThatTheNominalOnesViolate) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 45: the same campaign flown in the planned mode with robust margins (docs/pet-erg.md,
+// sections 14 and 16.3): every run converges with every constraint kept and its true errors
+// within the peaks its design proved, sooner than the robust PET-ERG's runs.
+TEST(CampaignCli, PlannedRobustMarginsKeepEveryConstraintAndConvergeSoonerThanThePetErg) {
+  const auto dir = fresh_dir("campaign_planned_robust");
+  const long runs = attiguard::test::for_this_build(24, 6);
+  const std::string flags = "--runs " + std::to_string(runs) + " --threads 2";
+  const auto planned = campaign("examples/pet_erg_robust_campaign_planned.toml", dir / "planned", flags);
+  ASSERT_EQ(planned.exit_code, 0) << planned.err;
+  const auto pet = campaign("examples/pet_erg_robust_campaign.toml", dir / "pet", flags);
+  ASSERT_EQ(pet.exit_code, 0) << pet.err;
+  const auto jp = nlohmann::json::parse(read_file(dir / "planned/campaign.json"));
+  const auto je = nlohmann::json::parse(read_file(dir / "pet/campaign.json"));
+  EXPECT_EQ(jp["ok"], runs);
+  EXPECT_EQ(jp["violations"], 0);
+  EXPECT_EQ(jp["outcomes"].value("converged", 0L), runs);
+  EXPECT_GT(jp["figures"]["min_pointing_margin"]["min"].get<double>(), 0.0);
+  EXPECT_LE(jp["figures"]["max_V_minus_Gamma"]["max"].get<double>(), 0.0);  // error ratio ≤ 1
+  EXPECT_LT(jp["figures"]["convergence_time"]["p50"].get<double>(),
+            je["figures"]["convergence_time"]["p50"].get<double>());
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
   const auto dir = fresh_dir("campaign_replay");
   ASSERT_EQ(campaign(kExample, dir, "--runs 8 --seed 5").exit_code, 0);

@@ -473,7 +473,7 @@ TEST(AllocationFree, PlannedGovernorStepFlyingAPlanWithDelay) {
   const plan::PlannedSlew planned = plan::plan_slew(p);
   const double h = 0.1;
   governor::PlannedGovernor gov(planned.plan, p.cones,
-                                governor::PlannedGovernorParams{{2.0, 4.0}, p.tau_max, h, 0.05, h, 1});
+                                governor::PlannedGovernorParams{{2.0, 4.0}, p.tau_max, h, 0.05, h, 1, std::nullopt});
   const dynamics::RigidBody body(p.J_b);
   Mat3 R_ib = lie::exp(Vec3(2.0 * std::numbers::pi / 180.0, 0.0, 0.0));
   Vec3 omega_b = Vec3::Zero();

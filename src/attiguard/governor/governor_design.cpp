@@ -39,40 +39,6 @@ std::string budget(const RobustMargin& m) {
          num(m.hold_error) + ", reference lag " + num(m.reference_lag_error) + ")";
 }
 
-/// The bounds of the flight loop, the imperfections and the wheels (section 13, "Assumptions").
-RobustMarginInputs margin_inputs(const GovernorDesignInputs& in) {
-  const ImperfectionBounds& b = in.bounds;
-  RobustMarginInputs r;
-  r.kp = in.params.gains.kp;
-  r.kd = in.params.gains.kd;
-  r.J = in.params.J;
-  r.control_period = in.control_period;
-  r.delay_periods = b.delay_periods;
-  r.attitude_bias = b.attitude_bias;
-  r.attitude_noise = b.attitude_noise;
-  r.rate_error = b.rate_bias + b.rate_noise;
-  r.quantisation_error = 0.5 * std::sqrt(3.0) * b.torque_quantum;  // ‖Q(τ) − τ‖ ≤ (√3/2) q
-  r.disturbance = b.disturbance;
-  r.epsilon_gamma = in.params.epsilon_gamma;
-  r.max_reference_step = in.max_reference_step;
-  r.applied_torque_max = in.params.tau_max;
-  if (!in.wheels.empty()) {
-    // ‖A u‖ ≤ σ_max(A) ‖u‖ and ‖A h‖ ≤ σ_max(A) ‖h‖ with |u_i| ≤ u_max,i, |h_i| ≤ h_max,i (the
-    // momentum limit is assumed to hold: it is checked, not governed).
-    Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, static_cast<Eigen::Index>(in.wheels.size()));
-    double u2 = 0.0;
-    double h2 = 0.0;
-    for (std::size_t i = 0; i < in.wheels.size(); ++i) {
-      A.col(static_cast<Eigen::Index>(i)) = in.wheels[i].axis_b.normalized();
-      u2 += in.wheels[i].torque_max * in.wheels[i].torque_max;
-      h2 += in.wheels[i].momentum_max * in.wheels[i].momentum_max;
-    }
-    const double sigma_max = std::sqrt(lie::lambda_max(A * A.transpose()));
-    r.applied_torque_max = std::min(r.applied_torque_max, sigma_max * std::sqrt(u2));
-    r.wheel_momentum_max = sigma_max * std::sqrt(h2);
-  }
-  return r;
-}
 
 /// Γ_d of the wheel polytope with each limit reduced to u_max,i − ‖r_i‖ e_cmd (section 13).
 double reduced_wheel_gamma_d(const GovernorDesignInputs& in, double e_cmd) {
@@ -177,6 +143,40 @@ void design_robust(const GovernorDesignInputs& in, GovernorDesign& d) {
 }
 
 }  // namespace
+
+RobustMarginInputs margin_inputs(const GovernorDesignInputs& in) {
+  const ImperfectionBounds& b = in.bounds;
+  RobustMarginInputs r;
+  r.kp = in.params.gains.kp;
+  r.kd = in.params.gains.kd;
+  r.J = in.params.J;
+  r.control_period = in.control_period;
+  r.delay_periods = b.delay_periods;
+  r.attitude_bias = b.attitude_bias;
+  r.attitude_noise = b.attitude_noise;
+  r.rate_error = b.rate_bias + b.rate_noise;
+  r.quantisation_error = 0.5 * std::sqrt(3.0) * b.torque_quantum;  // ‖Q(τ) − τ‖ ≤ (√3/2) q
+  r.disturbance = b.disturbance;
+  r.epsilon_gamma = in.params.epsilon_gamma;
+  r.max_reference_step = in.max_reference_step;
+  r.applied_torque_max = in.params.tau_max;
+  if (!in.wheels.empty()) {
+    // ‖A u‖ ≤ σ_max(A) ‖u‖ and ‖A h‖ ≤ σ_max(A) ‖h‖ with |u_i| ≤ u_max,i, |h_i| ≤ h_max,i (the
+    // momentum limit is assumed to hold: it is checked, not governed).
+    Eigen::Matrix<double, 3, Eigen::Dynamic> A(3, static_cast<Eigen::Index>(in.wheels.size()));
+    double u2 = 0.0;
+    double h2 = 0.0;
+    for (std::size_t i = 0; i < in.wheels.size(); ++i) {
+      A.col(static_cast<Eigen::Index>(i)) = in.wheels[i].axis_b.normalized();
+      u2 += in.wheels[i].torque_max * in.wheels[i].torque_max;
+      h2 += in.wheels[i].momentum_max * in.wheels[i].momentum_max;
+    }
+    const double sigma_max = std::sqrt(lie::lambda_max(A * A.transpose()));
+    r.applied_torque_max = std::min(r.applied_torque_max, sigma_max * std::sqrt(u2));
+    r.wheel_momentum_max = sigma_max * std::sqrt(h2);
+  }
+  return r;
+}
 
 WheelPolytope wheel_polytope(const GovernorDesignInputs& in) {
   if (in.wheels.empty()) return {};

@@ -90,6 +90,12 @@ struct GovernorDesign {
 /// ReactionWheelArray refuses, or when the polytope's Γ_d cannot be computed.
 [[nodiscard]] WheelPolytope wheel_polytope(const GovernorDesignInputs& in);
 
+/// The bounds of the flight loop, the imperfections and the wheels that the robust margins take
+/// (docs/pet-erg.md, section 13, "Assumptions"): sensors, quantum, disturbance, delay, the
+/// applied torque's bound and ‖A h‖ ≤ σ_max(A)‖h_max‖ of the wheels. The gains k_p, k_d and
+/// Γ_top are left for the caller.
+[[nodiscard]] RobustMarginInputs margin_inputs(const GovernorDesignInputs& in);
+
 /// The governor's design [docs/pet-erg.md, sections 12-13]: wheel_polytope, then with robust
 /// margins the command error e_cmd, the reduced torque limits, the robust margin of
 /// compute_robust_margin and the tightened cones. Throws SetupError with the reason (the messages

@@ -48,18 +48,49 @@ PlannedGovernor::PlannedGovernor(const SlewPlan& plan, std::span<const ConeConst
     throw SetupError("planned governor: control_period must be >= 0 and delay_periods 0 or 1 "
                      "(1 only with a control period)");
   }
+  if (params.robust && (!(params.control_period > 0.0) || !(params.robust->rate > 0.0) ||
+                        !(params.robust->rate <= 1.0) || !(params.robust->attitude_error >= 0.0) ||
+                        !(params.robust->rate_error >= 0.0) || !std::isfinite(params.robust->attitude_error) ||
+                        !std::isfinite(params.robust->rate_error))) {
+    throw SetupError("planned governor: robust margins need the flight loop (control_period > 0), "
+                     "a clock rate in (0, 1] and positive finite error peaks");
+  }
 }
 
-void PlannedGovernor::predict(const lie::Mat3& R_ib, const lie::Vec3& omega_b, lie::Mat3& R_next,
-                              lie::Vec3& omega_next) const noexcept {
-  // One midpoint step of the rigid body under the acting torque (the disturbance unknown).
+void PlannedGovernor::predict(const lie::Mat3& R_ib, const lie::Vec3& omega_b, const lie::Vec3& wheel_momentum_b,
+                              lie::Mat3& R_next, lie::Vec3& omega_next) const noexcept {
+  // One midpoint step of the rigid body under the acting torque (the disturbance unknown), the
+  // wheels' momentum held.
   const double h = params_.control_period;
   const lie::Mat3& J = progress_.plan().inertia();
-  const lie::Vec3 a1 = J_inv_b_ * (acting_b_ - omega_b.cross(J * omega_b));
+  const lie::Vec3 a1 = J_inv_b_ * (acting_b_ - omega_b.cross(J * omega_b + wheel_momentum_b));
   const lie::Vec3 w_mid = omega_b + 0.5 * h * a1;
-  const lie::Vec3 a2 = J_inv_b_ * (acting_b_ - w_mid.cross(J * w_mid));
+  const lie::Vec3 a2 = J_inv_b_ * (acting_b_ - w_mid.cross(J * w_mid + wheel_momentum_b));
   R_next = R_ib * lie::exp(h * w_mid);
   omega_next = omega_b + h * a2;
+}
+
+RateChoice PlannedGovernor::robust_choice(double t, double sigma_act, double rate_act, const lie::Mat3& R_ib,
+                                          const lie::Vec3& omega_b) const noexcept {
+  const PlannedRobust& rb = *params_.robust;
+  RateChoice c;
+  // From rest at σ = 0 the plan is at rest (ω_p(0) = 0): a jump to the design's ṡ leaves the
+  // errors unchanged; afterwards the clock coasts (s̈ = 0), as the design assumed.
+  // The measured errors against the reference at t, as a ratio to what the design proved.
+  const control::TrackingReference ref = progress_.reference(clock_.sigma_at(t), clock_.rate_at(t), 0.0);
+  const control::TrackingError e = control::tracking_error(R_ib, omega_b, ref);
+  const bool waiting = sigma_act <= 0.0 && rate_act == 0.0;
+  const bool start = waiting && e.e_R.norm() <= rb.gate_attitude && e.e_Omega.norm() <= rb.gate_rate;
+  c.rate = start ? rb.rate : rate_act;
+  c.accel = 0.0;
+  c.rule = start ? RateRule::jump : RateRule::coast;
+  constexpr double kTiny = std::numeric_limits<double>::min();
+  c.V = std::max(e.e_R.norm() / std::max(kTiny, rb.attitude_error + rb.attitude_allowance),
+                 e.e_Omega.norm() / std::max(kTiny, rb.rate_error + rb.rate_allowance));
+  c.gamma_g = 1.0;
+  c.torque_bound = rb.torque_bound;
+  c.admissible = c.V <= 1.0;
+  return c;
 }
 
 void PlannedGovernor::reset(double t0) noexcept {
@@ -84,8 +115,8 @@ PlannedOutput PlannedGovernor::evaluate(double sigma, double rate, double accel,
   return o;
 }
 
-const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib,
-                                           const lie::Vec3& omega_b) noexcept {
+const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
+                                           const lie::Vec3& wheel_momentum_b) noexcept {
   if (!started_) reset(t);
   // With a delay the torque computed now acts from t + h: the state and the clock there.
   const double h = params_.control_period;
@@ -94,7 +125,7 @@ const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib,
   lie::Vec3 omega = omega_b;
   if (params_.delay_periods == 1) {
     acting_b_ = pending_b_;  // computed at the previous instant, acting on [t, t + h)
-    predict(R_ib, omega_b, R, omega);
+    predict(R_ib, omega_b, wheel_momentum_b, R, omega);
   }
   RateChoice choice = out_.choice;
   // The plan at the clock's σ, evaluated once: the choice keeps σ at t_act.
@@ -105,7 +136,8 @@ const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib,
   // A sampling instant (up to rounding of k·T_s); missed instants are not caught up.
   const bool sampled = t >= next_sample_ - 1e-9 * params_.sample_period;
   if (sampled) {
-    choice = progress_.choose(at_sigma, sigma, R, omega, clock_.rate_at(t_act));
+    choice = params_.robust ? robust_choice(t, sigma, clock_.rate_at(t_act), R_ib, omega_b)
+                            : progress_.choose(at_sigma, sigma, R, omega, clock_.rate_at(t_act));
     clock_ = ProgressClock{t_act, sigma, choice.rate, choice.accel, clock_.duration};
     const double Ts = params_.sample_period;
     next_sample_ += Ts * (std::floor((t - next_sample_) / Ts + 1e-9) + 1.0);
@@ -128,8 +160,9 @@ const PlannedOutput& PlannedGovernor::step(double t, const lie::Mat3& R_ib,
                           .omega_dot_b;
   }
   const lie::Mat3& J = plan.inertia();
-  saturate(control::tracking_torque(J, R, omega, ref, params_.gains), out_);
-  // V does not depend on s̈: at a sampling instant the choice's V is the V at the rate chosen.
+  saturate(control::tracking_torque(J, R, omega, ref, params_.gains) + omega.cross(wheel_momentum_b), out_);
+  // V does not depend on s̈: at a sampling instant the choice's V is the V at the rate chosen
+  // (with robust margins: the measured errors' ratio to the design's peaks).
   out_.V = sampled ? choice.V : control::tracking_lyapunov(J, R, omega, out_.reference, params_.gains);
   pending_b_ = out_.tau_b;
   out_.choice = choice;

@@ -13,12 +13,29 @@
 ///   gov.reset(t0);
 ///   loop: const PlannedOutput& out = gov.step(t, R_ib, omega_b);       // out.tau_b, out.sigma, …
 
+#include <optional>
 #include <span>
 
 #include "attiguard/control/so3_tracking.hpp"
 #include "attiguard/governor/progress_governor.hpp"
 
 namespace attiguard::governor {
+
+/// The robust margins of the planned mode (docs/pet-erg.md, section 16.3): the clock rate the
+/// design flies the plan at, the peaks of the tracking errors it proved and the torque bound.
+/// With them the clock waits at σ = 0 until the measured errors pass the gate, then jumps to that
+/// rate (the plan is at rest there: the errors do not change) and coasts; every choice checks the measured errors against the peaks plus the
+/// sensors' errors.
+struct PlannedRobust {
+  double rate{1.0};                ///< ṡ the clock runs at after the start, in (0, 1]
+  double attitude_error{0.0};      ///< ‖e_R‖ ≤ this in the analysis frame R B
+  double rate_error{0.0};          ///< ‖e_Ω‖ ≤ this [rad/s]
+  double attitude_allowance{0.0};  ///< the measured ‖e_R‖'s error (σ_n) [rad]
+  double rate_allowance{0.0};      ///< the measured ‖e_Ω‖'s error (σ_ω + σ_n ‖ω_d‖) [rad/s]
+  double torque_bound{0.0};        ///< the command's bound over the flight [N·m]
+  double gate_attitude{0.0};       ///< the clock starts once the measured ‖e_R‖ ≤ this …
+  double gate_rate{0.0};           ///< … and the measured ‖e_Ω‖ ≤ this [rad/s]
+};
 
 /// Parameters of the planned mode (docs/pet-erg.md, section 16.2).
 struct PlannedGovernorParams {
@@ -33,6 +50,8 @@ struct PlannedGovernorParams {
   /// step() predicts the state at t_{k+1} from the measurement and the torque acting until then
   /// and computes the torque for that instant (docs/pet-erg.md, section 16.2, "Flight loop").
   int delay_periods{0};
+  /// Robust margins (docs/pet-erg.md, section 16.3); empty: the nominal thresholds of 16.1.
+  std::optional<PlannedRobust> robust;
 };
 
 /// The plan's clock between two sampling instants (docs/pet-erg.md, section 16.1): from σ_k at
@@ -86,7 +105,16 @@ class PlannedGovernor {
   /// it for the state predicted at t + h, when the torque will act, then the tracking law's torque at (R_ib, ω_b) against
   /// the reference at σ (docs/pet-erg.md, section 16.2). Calls reset(t) first if reset was never
   /// called.
-  const PlannedOutput& step(double t, const lie::Mat3& R_ib, const lie::Vec3& omega_b) noexcept;
+  ///
+  /// `wheel_momentum_b` = A h, the wheels' momentum in the body frame [N·m·s] when the flight
+  /// software knows it: the law then cancels the whole gyroscopic torque ω × (Jω + A h) and the
+  /// prediction uses it (docs/pet-erg.md, section 16.3; the robust margins assume it).
+  const PlannedOutput& step(double t, const lie::Mat3& R_ib, const lie::Vec3& omega_b,
+                            const lie::Vec3& wheel_momentum_b) noexcept;
+  /// step() without wheel momentum (a rigid body, or momentum the software does not know).
+  const PlannedOutput& step(double t, const lie::Mat3& R_ib, const lie::Vec3& omega_b) noexcept {
+    return step(t, R_ib, omega_b, kNoMomentum);
+  }
 
   /// The reference at plan time σ flown at the rate ṡ with the clock's acceleration s̈ and the
   /// tracking law's torque and V there (a pure function of the state; the continuous-time
@@ -105,13 +133,18 @@ class PlannedGovernor {
   [[nodiscard]] const PlannedGovernorParams& params() const noexcept { return params_; }
 
  private:
+  static inline const lie::Vec3 kNoMomentum = lie::Vec3::Zero();
   ProgressGovernor progress_;
   PlannedGovernorParams params_;
   /// o.tau_b = the law's torque `law_b` scaled onto ‖τ‖ = τ_max when larger; o.demand_ratio.
   void saturate(const lie::Vec3& law_b, PlannedOutput& o) const noexcept;
+  /// The robust mode's choice (docs/pet-erg.md, section 16.3): jump to ṡ = 1 from rest at σ = 0,
+  /// else coast; V of the choice is W̃ of the measurement against the reference at t.
+  [[nodiscard]] RateChoice robust_choice(double t, double sigma_act, double rate_act, const lie::Mat3& R_ib,
+                                         const lie::Vec3& omega_b) const noexcept;
   /// The state one period ahead under the torque acting now (delay compensation).
-  void predict(const lie::Mat3& R_ib, const lie::Vec3& omega_b, lie::Mat3& R_next,
-               lie::Vec3& omega_next) const noexcept;
+  void predict(const lie::Mat3& R_ib, const lie::Vec3& omega_b, const lie::Vec3& wheel_momentum_b,
+               lie::Mat3& R_next, lie::Vec3& omega_next) const noexcept;
 
   PlannedOutput out_;
   ProgressClock clock_;

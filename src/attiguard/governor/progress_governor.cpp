@@ -1,6 +1,7 @@
 #include "attiguard/governor/progress_governor.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -147,34 +148,45 @@ double ProgressGovernor::torque_bound(double gamma, double rate, const PlanWindo
   // With the clock's acceleration s̈ the reference's ω̇_d = ṡ² ω̇_p + s̈ ω_p and its torque
   // ṡ² τ_p + s̈ J ω_p: ‖ω̇_d‖ ≤ ṡ²‖ω̇_p‖ + |s̈|‖ω_p‖, ‖·‖ ≤ ṡ²‖τ_p‖ + |s̈| λ_max ‖ω_p‖.
   gamma = std::max(0.0, gamma);
-  const double s2 = rate * rate;
-  const double a = std::abs(accel);
-  const double feedforward_spread =
-      (lambda_max_ - lambda_min_) * (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
-  const auto attitude_terms = [&](double f) {
+  const auto attitude_angle = [&](double f) {
     // 1 − cos θ = x: sin θ = √(x(2 − x)) while θ < π/2, and θ = 2 asin √(x/2) is at most
     // √(2x/(1 − x/2)) (asin y ≤ y/√(1 − y²)), tight for small θ; acos beyond x = 1.
     const double x = std::min(2.0, f * gamma / gains_.k_R);
     const double sin_bound = x < 1.0 ? std::sqrt(x * (2.0 - x)) : 1.0;
     const double theta = x < 1.0 ? std::sqrt(2.0 * x / (1.0 - 0.5 * x)) : std::acos(1.0 - x);
-    return gains_.k_R * sin_bound + theta * feedforward_spread;
+    return std::pair{sin_bound, theta};
   };
-  const auto rate_terms = [&](double f) {
-    const double E = std::sqrt(2.0 * (1.0 - f) * gamma / lambda_min_);
-    return gains_.k_Omega * E + lambda_max_ * E * E + 3.0 * lambda_max_ * E * rate * w.omega_max;
+  const auto rate_error = [&](double f) { return std::sqrt(2.0 * (1.0 - f) * gamma / lambda_min_); };
+  const auto bound = [&](double f_attitude, double f_rate) {
+    const auto [sin_bound, theta] = attitude_angle(f_attitude);
+    const double E = rate_error(f_rate);
+    return gains_.k_R * sin_bound + gains_.k_Omega * E + feedforward_error(theta, E, rate, w, accel);
   };
-  const double reference = s2 * w.tau_max + a * lambda_max_ * w.omega_max;
+  const double reference = reference_torque(rate, w, accel);
   // Both errors at the full Γ bounds every split: within τ_max, that coarse bound is the answer
   // (one evaluation, the flight loop's usual case); else the cells.
-  const double coarse = attitude_terms(1.0) + rate_terms(0.0) + reference;
+  const double coarse = bound(1.0, 0.0) + reference;
   if (coarse <= tau_max_) return coarse;
   double worst = 0.0;
   for (int i = 0; i < kSplitCells; ++i) {
     const double f0 = static_cast<double>(i) / kSplitCells;
     const double f1 = static_cast<double>(i + 1) / kSplitCells;
-    worst = std::max(worst, attitude_terms(f1) + rate_terms(f0));
+    worst = std::max(worst, bound(f1, f0));
   }
   return worst + reference;
+}
+
+double ProgressGovernor::feedforward_error(double theta, double E, double rate, const PlanWindow& w,
+                                           double accel) const noexcept {
+  const double s2 = rate * rate;
+  const double a = std::abs(accel);
+  const double spread =
+      (lambda_max_ - lambda_min_) * (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
+  return theta * spread + lambda_max_ * E * E + 3.0 * lambda_max_ * E * rate * w.omega_max;
+}
+
+double ProgressGovernor::reference_torque(double rate, const PlanWindow& w, double accel) const noexcept {
+  return rate * rate * w.tau_max + std::abs(accel) * lambda_max_ * w.omega_max;
 }
 
 double ProgressGovernor::torque_threshold(double rate, const PlanWindow& w) const noexcept {

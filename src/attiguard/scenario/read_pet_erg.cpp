@@ -378,8 +378,13 @@ TableReader parse_control(const TableReader& root, sim::PetErgScenario& sc) {
                        "only with margins = \"robust\"");
   sc.control_period = control.number_or("control_period", 0.0, NumberRule::non_negative());
   if (sc.params.mode == GovernorMode::planned && sc.margins == governor::Margins::robust) {
-    control.fail("margins", "robust margins of the planned mode are not built yet: use "
-                            "margins = \"nominal\" with governor = \"planned\"");
+    if (!(sc.control_period > 0.0)) {
+      control.fail("margins", "robust margins of the planned mode need the flight loop: set "
+                              "[control] control_period > 0 (docs/pet-erg.md, section 16.3)");
+    }
+    control.used_only_if("robust_reference_step", false,
+                         "the planned mode has no reference steps: its robust margins size the plan "
+                         "(docs/pet-erg.md, section 16.3)");
   }
   return control;
 }
@@ -568,7 +573,13 @@ sim::PetErgScenario parse_pet_erg_with(const Document& doc, PetErgChecks checks)
   // The planned mode ends in the PD hold: its thresholds and admissibility are those of mode
   // none (the start at rest outside every cone); the mode is set back below.
   const bool planned = sc.params.mode == GovernorMode::planned;
-  if (planned) sc.params.mode = GovernorMode::none;
+  // Its robust margins are those of section 16.3 (sim/planned_robust_design), computed with the
+  // plan; the PD hold's design stays nominal.
+  const governor::Margins margins = sc.margins;
+  if (planned) {
+    sc.params.mode = GovernorMode::none;
+    sc.margins = governor::Margins::nominal;
+  }
   derive_governor_values(root, control, sc, planned);
   check_torque_threshold(control, sc.params);
   check_wheel_polytope(root, sc);
@@ -576,7 +587,10 @@ sim::PetErgScenario parse_pet_erg_with(const Document& doc, PetErgChecks checks)
   check_step_counts(root, control, sc);
   root.finish();
   if (checks == PetErgChecks::run) check_admissible({root, initial, desired}, sc, design);
-  if (planned) sc.params.mode = GovernorMode::planned;
+  if (planned) {
+    sc.params.mode = GovernorMode::planned;
+    sc.margins = margins;
+  }
   return sc;
 }
 

@@ -379,7 +379,10 @@ void add_constraints(nlohmann::json& j, const PetErgScenario& sc, const PetErgRe
                                                 r.max_wheel_momentum_ratio <= 1.0);
   j["constraints_satisfied"] = torque_ok && pointing_ok && wheels_ok;
   // With robust margins the level is W (docs/pet-erg.md, section 13), of the true state.
-  j["lyapunov_level"] = sc.margins == governor::Margins::robust ? "W" : "V";
+  // Planned mode with robust margins: the true errors' ratio to the proved peaks (section 16.3).
+  j["lyapunov_level"] = sc.margins != governor::Margins::robust          ? "V"
+                        : sc.params.mode == governor::GovernorMode::planned ? "error_ratio"
+                                                                            : "W";
   j["max_V_minus_Gamma"] = r.max_V_minus_Gamma;
   j["V_below_Gamma"] = r.max_V_minus_Gamma <= 0.0;
 }
@@ -429,6 +432,45 @@ nlohmann::json planned_json(const PetErgResult& r) {
 
 }  // namespace
 
+namespace {
+
+/// The robust margins of a planned run (docs/pet-erg.md, section 16.3), summary.json's
+/// planned.robust.
+nlohmann::json planned_robust_json(const PlannedRobustDesign& d, const PlannedFigures& f, double convergence_time) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  const auto budget = [](const governor::RobustTrackingMargin& m) {
+    return nlohmann::json{{"torque_error", m.torque_error},
+                          {"disturbance", m.disturbance},
+                          {"state", m.state_error},
+                          {"quantisation", m.quantisation_error},
+                          {"hold", m.hold_error},
+                          {"wheels", m.wheel_error},
+                          {"bias", m.bias_error},
+                          {"kinematic_error", m.kinematic_error},
+                          {"attitude_error_max_deg", m.attitude_error_max * kDeg},
+                          {"rate_error_max", m.rate_error_max},
+                          {"feedback_torque_max", m.feedback_torque_max}};
+  };
+  const double flown = f.plan.duration / d.rate;
+  return {{"rate", d.rate},
+          {"flown_duration", flown},
+          {"flown_ratio", flown / f.plan.bang_bang_time},
+          {"flight", budget(d.margin)},
+          {"wait", budget(d.rest)},
+          {"gate_attitude", d.gate_attitude},
+          {"gate_rate", d.gate_rate},
+          {"cone_margin_needed_deg", d.cone_margin_needed * kDeg},
+          {"plan_cone_margin_deg", d.plan_cone_margin * kDeg},
+          {"torque_needed", d.torque_needed},
+          {"torque_limit", d.torque_limit},
+          {"max_error_ratio", f.max_W_minus_level + 1.0},
+          {"errors_within_bounds", f.max_W_minus_level <= 0.0},
+          {"convergence_time_over_flown_plan",
+           convergence_time >= 0.0 ? nlohmann::json(convergence_time / flown) : nlohmann::json(nullptr)}};
+}
+
+}  // namespace
+
 nlohmann::json planned_figures_json(const PlannedFigures& f, double convergence_time) {
   const plan::PlanReport& p = f.plan;
   const double T_p = p.duration;
@@ -445,7 +487,7 @@ nlohmann::json planned_figures_json(const PlannedFigures& f, double convergence_
                          {"torque_headroom_derived", f.torque_headroom_derived},
                          {"cone_margin_deg", f.cone_margin * 180.0 / std::numbers::pi},
                          {"cone_margin_derived", f.cone_margin_derived}};
-  return {{"plan", plan},
+  nlohmann::json j = {{"plan", plan},
           {"k_R", f.gains.k_R},
           {"k_Omega", f.gains.k_Omega},
           {"gains_derived", f.gains_derived},
@@ -470,6 +512,8 @@ nlohmann::json planned_figures_json(const PlannedFigures& f, double convergence_
           {"convergence_time_over_plan",
            convergence_time >= 0.0 && T_p > 0.0 ? nlohmann::json(convergence_time / T_p)
                                                 : nlohmann::json(nullptr)}};
+  if (f.robust) j["robust"] = planned_robust_json(*f.robust, f, convergence_time);
+  return j;
 }
 
 namespace {

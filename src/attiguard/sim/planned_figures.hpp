@@ -6,7 +6,11 @@
 /// object (docs/scenario-format.md, "pet_erg").
 
 #include "attiguard/control/so3_tracking.hpp"
+#include <limits>
+#include <optional>
+
 #include "attiguard/plan/slew_planner.hpp"
+#include "attiguard/sim/planned_robust_design.hpp"
 
 namespace attiguard::sim {
 
@@ -42,6 +46,11 @@ struct PlannedFigures {
   double last_V{0.0};              ///< V⁺ of the last choice
   double last_gamma_g{0.0};        ///< Γ_g of the last choice
   double last_torque_bound{0.0};   ///< the torque bound of the last choice [N·m]
+  /// With robust margins (docs/pet-erg.md, section 16.3): the design the plan was made for
+  std::optional<PlannedRobustDesign> robust;
+  /// With robust margins: max over the observed instants of W − L of the true state seen through
+  /// its bias (≤ 0 by the guarantee)
+  double max_W_minus_level{-std::numeric_limits<double>::infinity()};
 };
 
 }  // namespace attiguard::sim

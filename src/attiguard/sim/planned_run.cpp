@@ -1,6 +1,8 @@
 #include "attiguard/sim/planned_run.hpp"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -14,6 +16,7 @@
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/sim/pet_erg_loop.hpp"
 #include "attiguard/sim/pet_erg_slew_problem.hpp"
+#include "attiguard/sim/planned_robust_design.hpp"
 
 namespace attiguard::sim {
 
@@ -50,6 +53,11 @@ double attitude_error(const PetErgScenario& sc) {
   const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
   return std::max(s.attitude_bias_b.norm(), sc.imperfections.attitude_bias_bound) + s.attitude_noise;
 }
+/// The attitude error that costs the law torque: with robust margins the bias is geometric (the
+/// analysis frame R B, docs/pet-erg.md section 16.3) and only the noise counts.
+double torque_attitude_error(const PetErgScenario& sc) {
+  return sc.margins == governor::Margins::robust ? sc.imperfections.sensor.attitude_noise : attitude_error(sc);
+}
 double rate_error(const PetErgScenario& sc) {
   const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
   return std::max(s.rate_bias_b.norm(), sc.imperfections.rate_bias_bound) + s.rate_noise;
@@ -59,12 +67,12 @@ double rate_error(const PetErgScenario& sc) {
 /// (k_Ω e_ω + k_R e_θ + q√3/2) [N·m] (docs/pet-erg.md, section 16.2, "Defaults").
 double sensor_torque(const PetErgScenario& sc, const control::TrackingGains& g) {
   const PetErgImperfections& im = sc.imperfections;
-  return g.k_Omega * rate_error(sc) + g.k_R * attitude_error(sc) + 0.5 * std::sqrt(3.0) * im.torque_quantum;
+  return g.k_Omega * rate_error(sc) + g.k_R * torque_attitude_error(sc) + 0.5 * std::sqrt(3.0) * im.torque_quantum;
 }
 
 /// The largest ω_n with J_max(1.6 ω_n e_ω + ω_n² e_θ) ≤ kNoiseShare τ_plan (+∞ without errors).
 double noise_bandwidth(const PetErgScenario& sc, double J_max, double plan_torque) {
-  const double A = J_max * attitude_error(sc);
+  const double A = J_max * torque_attitude_error(sc);
   const double B = 2.0 * kDampingRatio * J_max * rate_error(sc);
   const double C = kNoiseShare * plan_torque;
   if (A <= 0.0 && B <= 0.0) return std::numeric_limits<double>::infinity();
@@ -123,6 +131,112 @@ void set_integration_step(const PlannedFigures& f, const Mat3& J, PetErgScenario
   if (run.control_period > 0.0) run.integrator.step = std::min(run.integrator.step, run.control_period);
 }
 
+constexpr int kRobustPlans = 4;              ///< plans the robust design makes at most
+constexpr double kRobustMarginSlack = 1.02;  ///< a replanned cone margin: 2 % above the need
+constexpr int kRateBisections = 14;          ///< bisections of the clock's rate ṡ
+constexpr double kSlowestRate = 0.02;        ///< the slowest ṡ the design tries
+/// Multiples of the derived natural frequency the robust design tries (softer gains: a smaller
+/// hold error, a larger attitude error).
+constexpr std::array<double, 7> kRobustBandwidths{1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125};
+
+/// The design at ṡ, or nothing when the margin is refused there.
+std::optional<PlannedRobustDesign> design_at(const PetErgScenario& sc, const governor::ProgressGovernor& progress,
+                                             const PlannedRobustBasis& basis, double rate) {
+  try {
+    return planned_robust_design(sc, progress, basis, rate);
+  } catch (const SetupError&) {
+    return std::nullopt;
+  }
+}
+
+/// The fastest ṡ ∈ [kSlowestRate, 1] whose design keeps the torque (bisection: the need grows
+/// with ṡ), with its design; nothing when even the slowest does not.
+std::optional<PlannedRobustDesign> fastest_rate(const PetErgScenario& sc, const governor::ProgressGovernor& progress) {
+  const auto torque_ok = [](const std::optional<PlannedRobustDesign>& d) {
+    return d && d->torque_needed <= d->torque_limit;
+  };
+  PlannedRobustBasis basis;
+  try {
+    basis = planned_robust_basis(sc, progress);
+  } catch (const SetupError&) {
+    return std::nullopt;
+  }
+  std::optional<PlannedRobustDesign> best = design_at(sc, progress, basis, 1.0);
+  if (torque_ok(best)) return best;
+  best = design_at(sc, progress, basis, kSlowestRate);
+  if (!torque_ok(best)) return std::nullopt;
+  double lo = kSlowestRate, hi = 1.0;
+  for (int i = 0; i < kRateBisections; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    std::optional<PlannedRobustDesign> d = design_at(sc, progress, basis, mid);
+    if (torque_ok(d)) {
+      lo = mid;
+      best = std::move(d);
+    } else {
+      hi = mid;
+    }
+  }
+  return best;
+}
+
+/// The tracking gains at ω_n (docs/pet-erg.md, section 16.2): k_R = J_max ω_n², k_Ω = 2ζ J_max ω_n.
+control::TrackingGains gains_at(const PetErgScenario& sc, double omega_n) {
+  const double J_max = Eigen::SelfAdjointEigenSolver<Mat3>(sc.params.J).eigenvalues().maxCoeff();
+  return {J_max * omega_n * omega_n, 2.0 * kDampingRatio * J_max * omega_n};
+}
+
+/// Robust margins (docs/pet-erg.md, section 16.3, "Design"): the plan is flown at a constant
+/// clock rate ṡ (a time-scaled plan: rates ×ṡ, torque ×ṡ²). Over softer multiples of the derived
+/// gains, the fastest ṡ whose proved errors keep the command within the torque limit is found by
+/// bisection, and the fastest of all is taken; when the plan does not keep the cones by the
+/// proved attitude error θ* plus the bias β it is made again with that cone margin. A given cone margin or pair of gains is kept, its
+/// shortfall refused at its key.
+void plan_robust(const PetErgScenario& sc, const plan::PlannerOptions& options, PlannedSetup& s) {
+  PlannedFigures& f = s.figures;
+  const bool gains_free = f.gains_derived && sc.derived.kp_derived && sc.derived.kd_derived;
+  const double base_omega_n = f.natural_frequency;
+  for (int round = 0; round < kRobustPlans; ++round) {
+    s.planned = plan::plan_slew(s.problem, options);
+    std::optional<PlannedRobustDesign> best;
+    control::TrackingGains best_gains = f.gains;
+    double best_omega_n = f.natural_frequency;
+    for (const double m : kRobustBandwidths) {
+      const control::TrackingGains g = gains_free ? gains_at(sc, m * base_omega_n) : f.gains;
+      const governor::ProgressGovernor progress(s.planned.plan, sc.cones, f.tau_max, g, sc.control_period, 0.0);
+      std::optional<PlannedRobustDesign> d = fastest_rate(sc, progress);
+      if (d && (!best || d->rate > best->rate)) {
+        best = std::move(d);
+        best_gains = g;
+        best_omega_n = m * base_omega_n;
+      }
+      if (!gains_free) break;
+    }
+    if (!best) {
+      throw PlannedSetupRefusal("control", "margins", "robust margins of the planned mode: the imperfections' "
+                                "bounds leave no clock rate down to " + four_digits(kSlowestRate) +
+                                " whose proved errors keep the torque within " + four_digits(f.tau_max) +
+                                " N m, at any of the tried gains (docs/pet-erg.md, section 16.3)");
+    }
+    f.robust = best;
+    if (gains_free) {
+      f.natural_frequency = best_omega_n;
+      f.gains = best_gains;
+    }
+    if (best->plan_cone_margin >= best->cone_margin_needed) return;
+    const std::string need = four_digits(best->cone_margin_needed * 180.0 / std::numbers::pi);
+    if (sc.plan.cone_margin_given) {
+      throw PlannedSetupRefusal("plan", "cone_margin_deg", "robust margins of the planned mode need a cone margin of " +
+                                need + " deg; the plan keeps " +
+                                four_digits(best->plan_cone_margin * 180.0 / std::numbers::pi) + " deg");
+    }
+    s.problem.cone_margin = std::max(s.problem.cone_margin, 0.0) +
+                            kRobustMarginSlack * (best->cone_margin_needed - best->plan_cone_margin) + 1e-4;
+  }
+  throw PlannedSetupRefusal("control", "margins", "robust margins of the planned mode: no plan keeps the cones by "
+                            "the proved attitude error and the bias within " + std::to_string(kRobustPlans) +
+                            " plans (the cone margin needed grows with the plan)");
+}
+
 }  // namespace
 
 PlannedSetup planned_setup(const PetErgScenario& sc) {
@@ -155,7 +269,12 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   // needs up to 25 % more than the linear torque where the torque switches, for a quarter of an
   // interval; shorter intervals leave the tracking loop less to correct there.
   if (options.intervals == 0) options.intervals = kPlannedIntervals;
-  s.planned = plan::plan_slew(s.problem, options);
+  if (sc.margins == governor::Margins::robust) {
+    plan_robust(sc, options, s);
+    f.cone_margin = s.problem.cone_margin;
+  } else {
+    s.planned = plan::plan_slew(s.problem, options);
+  }
   f.plan = s.planned.report;
   const double T_p = s.planned.plan.duration();
   if (sc.control_period > T_p / kMinControlInstants) {
@@ -168,11 +287,38 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   f.sample_period = sc.control_period > 0.0 ? sc.control_period : T_p / kSamplesPerPlan;
   f.epsilon = kEpsilon;
   s.params = governor::PlannedGovernorParams{f.gains, f.tau_max, f.sample_period, f.epsilon,
-                                             sc.control_period, sc.imperfections.delay_periods};
+                                             sc.control_period, sc.imperfections.delay_periods, std::nullopt};
+  if (f.robust) s.params.robust = f.robust->params;
   s.run.params.Ts = f.sample_period;  // the continuous loop stops at every choice of ṡ
   set_integration_step(f, sc.params.J, s.run);
   return s;
 }
+
+namespace {
+
+/// `check`'s lines of the robust margins (docs/pet-erg.md, section 16.3).
+std::string robust_report(const PlannedRobustDesign& d, const PlannedFigures& f) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  const governor::RobustTrackingMargin& m = d.margin;
+  const double flown = f.plan.duration / d.rate;
+  std::string out = "robust margins of the planned mode (docs/pet-erg.md, section 16.3):\n";
+  out += "  clock rate " + four_digits(d.rate) + ": the plan flown in " + four_digits(flown) + " s = " +
+         four_digits(flown / f.plan.bang_bang_time) + "x the eigenaxis bang-bang time\n";
+  out += "  torque error w = " + four_digits(m.torque_error) + " N m (disturbance " + four_digits(m.disturbance) +
+         ", hold " + four_digits(m.hold_error) + ", state " + four_digits(m.state_error) + ", quantisation " +
+         four_digits(m.quantisation_error) + ", wheels " + four_digits(m.wheel_error) + ", bias " +
+         four_digits(m.bias_error) + ")\n";
+  out += "  proved errors: attitude " + four_digits(std::max(m.attitude_error_max, d.rest.attitude_error_max) * kDeg) +
+         " deg, rate " + four_digits(std::max(m.rate_error_max, d.rest.rate_error_max)) +
+         " rad/s; cone margin needed " + four_digits(d.cone_margin_needed * kDeg) + " deg (with the bias), the plan keeps " +
+         four_digits(d.plan_cone_margin * kDeg) + " deg\n";
+  out += "  torque needed " + four_digits(d.torque_needed) + " of " + four_digits(d.torque_limit) +
+         " N m; the clock starts once the measured errors are within " + four_digits(d.gate_attitude) + " rad and " +
+         four_digits(d.gate_rate) + " rad/s\n";
+  return out;
+}
+
+}  // namespace
 
 std::string planned_report(const PlannedSetup& setup) {
   const PlannedFigures& f = setup.figures;
@@ -196,6 +342,7 @@ std::string planned_report(const PlannedSetup& setup) {
   out += "  plan.cone_margin_deg = " + four_digits(f.cone_margin * kDeg) + mark(f.cone_margin_derived);
   out += "  sampling period of the rate " + four_digits(f.sample_period) + " s, epsilon " +
          four_digits(f.epsilon) + ", torque bound " + four_digits(f.tau_max) + " N m\n";
+  if (f.robust) out += robust_report(*f.robust, f);
   return out;
 }
 
@@ -208,7 +355,8 @@ class PlannedFlight {
       : sc_(setup.run),
         gov_(setup.planned.plan, setup.run.cones, setup.params),
         hold_(design.params, design.cones),
-        r_(initial_result(sc_, std::move(design), hold_)) {
+        r_(initial_result(sc_, std::move(design), hold_)),
+        bias_frame_(lie::exp(setup.run.imperfections.sensor.attitude_bias_b)) {
     r_.planned = setup.figures;
   }
 
@@ -219,6 +367,15 @@ class PlannedFlight {
     out.R_g = p.reference.R_ib;
     out.V = out.W = p.V;
     out.gamma_g = out.gamma = p.choice.gamma_g;
+    if (const auto& robust = gov_.params().robust) {
+      // The true errors seen through the bias against the reference, as a ratio to the peaks
+      // the design proved (section 16.3): at most 1 by the guarantee.
+      const control::TrackingError e = control::tracking_error(s.R[0] * bias_frame_, s.x, p.reference);
+      constexpr double kTiny = std::numeric_limits<double>::min();
+      out.W = std::max(e.e_R.norm() / std::max(kTiny, robust->attitude_error),
+                       e.e_Omega.norm() / std::max(kTiny, robust->rate_error));
+      out.gamma = 1.0;
+    }
     out.gamma_d = p.choice.torque_bound;
     out.trigger = p.choice.admissible;
     out.cone_count = static_cast<int>(sc_.cones.size());
@@ -232,6 +389,7 @@ class PlannedFlight {
   void observe(double t, const PetErgState& s, const GovernorOutput& out, const PlannedOutput& p) {
     record(sc_, r_, t, sc_.desired.at(t), s.R[0], out);
     PlannedFigures& f = *r_.planned;
+    if (f.robust) f.max_W_minus_level = std::max(f.max_W_minus_level, out.W - out.gamma);
     if (sc_.control_period == 0.0) demanded(p);
     if (p.sigma >= gov_.progress().plan().duration() && f.progress_end_time < 0.0) f.progress_end_time = t;
     f.final_progress = p.sigma;
@@ -278,12 +436,14 @@ class PlannedFlight {
   governor::PlannedGovernor gov_;
   governor::AttitudeGovernor hold_;  ///< the PD hold's figures (Γ_d of the hold)
   PetErgResult r_;
+  Mat3 bias_frame_;  ///< B = exp(b̂_R): the analysis frame R B of the robust margins
 };
 
 /// The design of the PD hold the plan ends with (its thresholds are the summary's Γ figures).
 governor::GovernorDesign hold_design(const PetErgScenario& run) {
   PetErgScenario hold = run;
   hold.params.mode = GovernorMode::none;
+  hold.margins = governor::Margins::nominal;  // the planned mode's robust margins are section 16.3's
   return design_governor(hold);
 }
 
@@ -406,7 +566,11 @@ class PlannedFlightLoop {
   PlannedView monitor(double t, const PetErgState& s) {
     const governor::PlannedGovernor& gov = flight_.governor();
     const governor::ProgressClock& clock = gov.clock();
-    PlannedOutput p = gov.evaluate(clock.sigma_at(t), clock.rate_at(t), clock.accel_at(t), s.R[0], s.x);
+    // With a delay the clock was set for t_k + h at t_k; with robust margins (a clock that coasts)
+    // the reference at t < t_k + h is σ_k − ṡ (t_k + h − t), at rest before the start.
+    double sigma = clock.sigma_at(t);
+    if (gov.params().robust && t < clock.t_k) sigma = std::max(0.0, clock.sigma_k - clock.rate_k * (clock.t_k - t));
+    PlannedOutput p = gov.evaluate(sigma, clock.rate_at(t), clock.accel_at(t), s.R[0], s.x);
     p.choice = gov.output().choice;
     PlannedView v{flight_.view(s, p, actuation_.torque_b()), p};
     flight_.observe(t, s, v.out, p);
@@ -418,7 +582,10 @@ class PlannedFlightLoop {
   void control(double t, PetErgState& s) {
     const dynamics::Measurement m = actuation_.measure(s.R[0], s.x);
     const governor::ProgressClock before = flight_.governor().clock();
-    const PlannedOutput& p = flight_.governor().step(t, m.R_ib, m.omega_b);
+    // With robust margins the law cancels the wheels' momentum coupling (section 16.3).
+    const bool robust = flight_.governor().params().robust.has_value();
+    const Vec3 wheel_momentum_b = robust && actuation_.has_wheels() ? actuation_.momentum_b(t) : Vec3::Zero();
+    const PlannedOutput& p = flight_.governor().step(t, m.R_ib, m.omega_b, wheel_momentum_b);
     actuation_.command(t, p.tau_b);
     flight_.demanded(p);
     if (p.sampled) {

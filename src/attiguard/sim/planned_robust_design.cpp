@@ -1,0 +1,136 @@
+#include "attiguard/sim/planned_robust_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "attiguard/governor/governor_design.hpp"
+#include "attiguard/governor/progress_governor.hpp"
+#include "attiguard/lie/symmetric_eigen.hpp"
+
+namespace attiguard::sim {
+
+double plan_feedforward_rate(const governor::SlewPlan& plan, double omega_max) {
+  const lie::Vec3 moments = lie::symmetric_eigenvalues(plan.inertia());
+  const double lmin = moments(0);
+  const double lmax = moments(2);
+  const auto nodes = plan.nodes();
+  const auto mid = plan.midpoint_torques();
+  double worst = 0.0;
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double dt = nodes[k + 1].t - nodes[k].t;
+    if (!(dt > 0.0)) continue;
+    const double tau_rate = std::max((mid[k] - nodes[k].tau_b).norm(), (nodes[k + 1].tau_b - mid[k]).norm()) / (0.5 * dt);
+    const lie::Vec3 D = (nodes[k + 1].omega_b - nodes[k].omega_b) / dt;
+    const lie::Vec3& m0 = nodes[k].omega_dot_b;
+    const lie::Vec3& m1 = nodes[k + 1].omega_dot_b;
+    const double omega_rate = std::max(m0.norm(), m1.norm()) + 1.5 * (D - 0.5 * (m0 + m1)).norm();
+    // d/dt J⁻¹(τ − ω × Jω): ‖J⁻¹‖ (‖τ̇‖ + 2 λ_max ‖ω‖ ‖ω̇‖)
+    worst = std::max(worst, (tau_rate + 2.0 * lmax * omega_max * omega_rate) / lmin);
+  }
+  return worst;
+}
+
+namespace {
+
+constexpr double kGateFactor = 1.25;  ///< the gate over the errors the torque error keeps at rest
+
+/// The robust margin's inputs (docs/pet-erg.md, section 16.3, "Assumptions"): the declared bounds
+/// of the scenario (section 13's), the reference's extremes at the clock rate ṡ and the start.
+governor::RobustTrackingInputs tracking_inputs(const PetErgScenario& sc, const governor::SlewPlan& plan,
+                                               const governor::PlanWindow& w, const control::TrackingGains& g,
+                                               double rate) {
+  const governor::RobustMarginInputs b = governor::margin_inputs(design_inputs(sc));
+  governor::RobustTrackingInputs in;
+  in.gains = g;
+  in.J = sc.params.J;
+  in.control_period = sc.control_period;
+  in.delay_periods = b.delay_periods;
+  in.attitude_bias = std::max(b.attitude_bias, sc.imperfections.sensor.attitude_bias_b.norm());
+  in.attitude_noise = b.attitude_noise;
+  in.rate_error = std::max(b.rate_error, sc.imperfections.sensor.rate_bias_b.norm() + sc.imperfections.sensor.rate_noise);
+  in.quantisation_error = b.quantisation_error;
+  in.disturbance = b.disturbance;
+  in.wheel_momentum_max = b.wheel_momentum_max;
+  in.applied_torque_max = b.applied_torque_max;
+  // The total momentum over the run: its initial value plus what the disturbance can add.
+  lie::Vec3 H0 = sc.params.J * sc.omega0_b;
+  for (const dynamics::ReactionWheel& wheel : sc.wheels) H0 += wheel.axis_b.normalized() * wheel.momentum0;
+  in.total_momentum_max = H0.norm() + b.disturbance * sc.duration;
+  // Flown at the constant clock rate ṡ: the reference's rate, acceleration and its change scale
+  // by ṡ, ṡ², ṡ³.
+  in.reference_rate_max = rate * w.omega_max;
+  in.reference_accel_max = rate * rate * w.omega_dot_max;
+  in.reference_jerk_max = rate * rate * rate * plan_feedforward_rate(plan, w.omega_max);
+  const governor::SlewPlanSample end = plan.evaluate(plan.duration());
+  in.reference_end_accel = rate * rate * end.omega_dot_b.norm();
+  // The start: on the plan's first attitude, at rest but for ω₀, seen through the bias.
+  in.initial_attitude_error = in.attitude_bias;
+  in.initial_rate_error = sc.omega0_b.norm();
+  return in;
+}
+
+}  // namespace
+
+PlannedRobustBasis planned_robust_basis(const PetErgScenario& sc, const governor::ProgressGovernor& progress) {
+  const governor::PlanWindow w = progress.ahead(0.0);
+  PlannedRobustBasis b;
+  governor::RobustTrackingInputs at_rest = tracking_inputs(sc, progress.plan(), w, progress.gains(), 0.0);
+  b.l1 = governor::tracking_l1_gains(at_rest.J, at_rest.gains);
+  // The wait: the clock held at σ = 0 (the reference at rest) from the scenario's start until
+  // the measured errors pass the gate; the gate is 1.25 times the errors the torque error alone
+  // keeps at rest, plus the sensors' errors, so that the wait ends.
+  b.rest = governor::compute_robust_tracking_margin(at_rest, b.l1);
+  at_rest.initial_attitude_error = 0.0;
+  at_rest.initial_rate_error = 0.0;
+  const governor::RobustTrackingMargin forced = governor::compute_robust_tracking_margin(at_rest, b.l1);
+  b.gate_attitude = kGateFactor * forced.e_R_max + at_rest.attitude_noise;
+  b.gate_rate = kGateFactor * forced.rate_error_max + at_rest.rate_error;
+  return b;
+}
+
+PlannedRobustDesign planned_robust_design(const PetErgScenario& sc, const governor::ProgressGovernor& progress,
+                                          const PlannedRobustBasis& basis, double rate) {
+  const governor::SlewPlan& plan = progress.plan();
+  const governor::PlanWindow w = progress.ahead(0.0);
+  PlannedRobustDesign d;
+  d.rate = rate;
+  d.rest = basis.rest;
+  d.gate_attitude = basis.gate_attitude;
+  d.gate_rate = basis.gate_rate;
+  // The flight: from the gate (the true errors within it plus the sensors' errors) at ṡ.
+  governor::RobustTrackingInputs in = tracking_inputs(sc, plan, w, progress.gains(), rate);
+  in.initial_attitude_error = std::asin(std::min(1.0, d.gate_attitude + in.attitude_noise));
+  in.initial_rate_error = d.gate_rate + in.rate_error;
+  d.margin = governor::compute_robust_tracking_margin(in, basis.l1);
+  const governor::RobustTrackingMargin& m = d.margin;
+  const double theta = std::max(m.attitude_error_max, d.rest.attitude_error_max);
+  d.cone_margin_needed = theta + in.attitude_bias;
+  d.plan_cone_margin = sc.cones.empty() ? std::numeric_limits<double>::infinity() : w.cone_margin_min;
+  // The command: the reference's torque, the feedback's peak, the feedforward's errors at the
+  // peaks, the command error (section 16.3, "Torque"); in the flight and in the wait.
+  const double flight = progress.reference_torque(rate, w) + m.feedback_torque_max +
+                        progress.feedforward_error(m.attitude_error_max, m.rate_error_max, rate, w) + m.command_error;
+  const double wait = d.rest.feedback_torque_max +
+                      progress.feedforward_error(d.rest.attitude_error_max, d.rest.rate_error_max, 0.0, w) +
+                      d.rest.command_error;
+  d.torque_needed = std::max(flight, wait);
+  d.torque_limit = progress.tau_max();
+  d.params.rate = rate;
+  d.params.attitude_error = std::max(m.e_R_max, d.rest.e_R_max);
+  d.params.rate_error = std::max(m.rate_error_max, d.rest.rate_error_max);
+  d.params.attitude_allowance = in.attitude_noise;
+  d.params.rate_allowance = in.rate_error + in.attitude_noise * in.reference_rate_max;
+  d.params.torque_bound = d.torque_needed;
+  d.params.gate_attitude = d.gate_attitude;
+  d.params.gate_rate = d.gate_rate;
+  return d;
+}
+
+PlannedRobustDesign planned_robust_design(const PetErgScenario& sc, const governor::ProgressGovernor& progress,
+                                          double rate) {
+  return planned_robust_design(sc, progress, planned_robust_basis(sc, progress), rate);
+}
+
+}  // namespace attiguard::sim

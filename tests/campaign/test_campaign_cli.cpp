@@ -119,6 +119,24 @@ TEST(CampaignCli, PlannedRobustMarginsKeepEveryConstraintAndConvergeSoonerThanTh
   std::filesystem::remove_all(dir);
 }
 
+// Issue 45: robust planned margins across the range of crafts: a 3U CubeSat (J ~ 0.04 kg m²,
+// 1 mN m wheels, 10 Hz) and a station (J ~ 4e6 kg m², 5 N m, 1 Hz with delay); the 10³-run
+// figures are in docs/pet-erg.md, section 16.3.
+TEST(CampaignCli, PlannedRobustMarginsHoldOnACubeSatAndAStation) {
+  const auto dir = fresh_dir("campaign_planned_robust_range");
+  const long runs = attiguard::test::for_this_build(12, 3);
+  for (const std::string name : {"pet_erg_cubesat_robust_campaign", "pet_erg_station_robust_campaign"}) {
+    const auto r = campaign("examples/" + name + ".toml", dir / name, "--runs " + std::to_string(runs) + " --threads 2");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(read_file(dir / name / "campaign.json"));
+    EXPECT_EQ(j["ok"], runs) << name;
+    EXPECT_EQ(j["violations"], 0) << name;
+    EXPECT_EQ(j["outcomes"].value("converged", 0L), runs) << name;
+    EXPECT_LE(j["figures"]["max_V_minus_Gamma"]["max"].get<double>(), 0.0) << name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CampaignCli, ReplayReproducesTheRowWithATrajectory) {
   const auto dir = fresh_dir("campaign_replay");
   ASSERT_EQ(campaign(kExample, dir, "--runs 8 --seed 5").exit_code, 0);

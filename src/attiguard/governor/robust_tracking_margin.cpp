@@ -180,6 +180,7 @@ void require_valid(const RobustTrackingInputs& in) {
 /// The peaks the budget is evaluated at: θ, ‖e_R‖ ≤ x, ‖e_Ω‖ ≤ y, ‖k_R e_R + k_Ω e_Ω‖ ≤ u.
 struct Peaks {
   double x{0.0}, y{0.0}, u{0.0};
+  double W{0.0};  ///< ‖w‖ ≤ W, the torque error
 };
 
 /// Constants of the craft used by the budget.
@@ -191,14 +192,14 @@ struct Craft {
 /// Δθ, Δω: the error of the state the torque is computed for (measured; with d = 1 predicted
 /// one period ahead by a midpoint step under the acting torque and the wheels' momentum)
 /// (docs/pet-erg.md, section 16.3, "Error budget").
-void state_errors(const RobustTrackingInputs& in, const Craft& k, double w, double Hb, double& d_theta,
-                  double& d_omega) {
+void state_errors(const RobustTrackingInputs& in, const Craft& k, const Peaks& p, double w, double Hb,
+                  double& d_theta, double& d_omega) {
   const double h = in.control_period;
   d_theta = in.attitude_noise;
   d_omega = in.rate_error;
   if (in.delay_periods == 0) return;
-  const double ad = (0.5 * (k.lmax - k.lmin) * w * w + in.wheel_momentum_max * w + in.applied_torque_max +
-                     in.disturbance) / k.lmin;  // ≥ ‖ω̇‖ of the rigid body under any applied torque
+  // ‖ω̇‖ ≤ ‖ė_Ω‖ + ‖d/dt(R_e ω_d)‖ ≤ (‖u‖ + ‖w‖)/λ_min + ‖ω‖‖ω_d‖ + ‖ω̇_d‖ along the tracked flight.
+  const double ad = (p.u + p.W) / k.lmin + w * in.reference_rate_max + in.reference_accel_max;
   d_omega += h * (h * in.applied_torque_max * w + in.disturbance + in.quantisation_error) / k.lmin +
              h * ((Hb + k.lmax * (w + in.rate_error + h * ad)) / k.lmin) * (in.rate_error + 2.0 * h * ad);
   // R: exp is 1-Lipschitz; ∫Bᵀω against h ω̃_m, and the first Magnus term (generously).
@@ -217,7 +218,7 @@ double torque_error_at(const RobustTrackingInputs& in, const Craft& k, const Pea
   const double rigid = k.lmax * w + in.wheel_momentum_max;
   const double Hb = in.total_momentum_max > 0.0 ? std::min(rigid, in.total_momentum_max) : rigid;
   double d_theta = 0.0, d_omega = 0.0;
-  state_errors(in, k, w, Hb, d_theta, d_omega);
+  state_errors(in, k, p, w, Hb, d_theta, d_omega);
   const double L_omega = kO + Hb + k.lmax * (w + d_omega + wd);
   const double L_R = kR + (kO + k.lmax * (w + d_omega)) * wd + k.lmax * wdd;
   m.state_error = L_R * d_theta + L_omega * d_omega;
@@ -271,6 +272,7 @@ Peaks bound_peaks(const RobustTrackingInputs& in, const Craft& k, const Peaks& p
   q.x = x_free + g.e_R_w * W + g.e_R_v * m.kinematic_error + pulses * g.e_R_w_peak;
   q.y = y_free + g.e_Omega_w * W + g.e_Omega_v * m.kinematic_error + pulses * g.e_Omega_w_peak;
   q.u = u_free + g.u_w * W + g.u_v * m.kinematic_error + pulses * g.u_w_peak;
+  q.W = W;
   return q;
 }
 
@@ -298,7 +300,8 @@ RobustTrackingMargin compute_robust_tracking_margin(const RobustTrackingInputs& 
   for (m.iterations = 1; m.iterations <= kFixedPointIterations; ++m.iterations) {
     const Peaks q = bound_peaks(in, k, p, m);
     if (!(q.x <= x_cap) || !std::isfinite(q.y) || !std::isfinite(q.u)) break;
-    const bool settled = q.x <= p.x * (1.0 + 1e-12) && q.y <= p.y * (1.0 + 1e-12) && q.u <= p.u * (1.0 + 1e-12);
+    const bool settled = q.x <= p.x * (1.0 + 1e-12) && q.y <= p.y * (1.0 + 1e-12) && q.u <= p.u * (1.0 + 1e-12) &&
+                         q.W <= p.W * (1.0 + 1e-12);
     p = q;
     if (settled) {
       converged = true;
@@ -307,10 +310,12 @@ RobustTrackingMargin compute_robust_tracking_margin(const RobustTrackingInputs& 
   }
   // Certified: at the inflated point the bounds are strictly below it, so the peaks, continuous
   // from below it at t = 0, can never reach it.
-  Peaks top{p.x * (1.0 + kSuperSolution), p.y * (1.0 + kSuperSolution), p.u * (1.0 + kSuperSolution)};
+  const double up = 1.0 + kSuperSolution;
+  const Peaks top{p.x * up, p.y * up, p.u * up, p.W * up};
   RobustTrackingMargin at_top = m;
   const Peaks check = converged ? bound_peaks(in, k, top, at_top) : Peaks{};
-  const bool strict = converged && top.x <= x_cap && check.x < top.x && check.y < top.y && check.u < top.u;
+  const bool strict =
+      converged && top.x <= x_cap && check.x < top.x && check.y < top.y && check.u < top.u && check.W <= top.W;
   require_tracking(strict, "the imperfections' torque error w = " + four_digits(m.torque_error) + " N m (hold " +
                                four_digits(m.hold_error) + ", state " + four_digits(m.state_error) +
                                ", disturbance " + four_digits(m.disturbance) + ") leaves no bounded tracking "

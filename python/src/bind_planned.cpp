@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -63,12 +64,14 @@ class PyPlannedGovernor {
     started_ = true;
   }
 
-  PyPlannedStep step(double t, const Mat3& R, const Vec3& omega_b) {
+  PyPlannedStep step(double t, const Mat3& R, const Vec3& omega_b, const std::optional<Vec3>& wheel_momentum_b) {
     check_step_time(kLabelStep, "reset(t0)", started_, t, last_t_);
     const Mat3 R_ok = scenario::checked_rotation_matrix(R, "R", kLabelStep);
     const Vec3 w_ok = scenario::checked_vector3(omega_b, "omega_b", kLabelStep);
+    const Vec3 h_ok = wheel_momentum_b ? scenario::checked_vector3(*wheel_momentum_b, "wheel_momentum_b", kLabelStep)
+                                       : Vec3::Zero();
     last_t_ = t;
-    const PlannedOutput& o = gov_.step(t, R_ok, w_ok);
+    const PlannedOutput& o = gov_.step(t, R_ok, w_ok, h_ok);
     return PyPlannedStep{o.tau_b, o.demand_ratio, o.reference.R_ib, o.sigma, o.rate, o.accel, o.V,
                          o.sampled, o.choice.admissible,
                          kRuleNames[static_cast<std::size_t>(o.choice.rule)],
@@ -115,8 +118,18 @@ void bind_planned(py::module_& m) {
                   "naming file, line and key on a bad file.")
       .def("reset", &PyPlannedGovernor::reset, py::arg("t0"), "Start the plan's clock at t0 (sigma = 0).")
       .def("step", &PyPlannedGovernor::step, py::arg("t"), py::arg("R"), py::arg("omega_b"),
+           py::arg("wheel_momentum_b") = py::none(),
            "One control step at time t (non-decreasing) with the measured R (body to inertial) "
-           "and omega_b [rad/s]: the torque to command and the clock.")
+           "and omega_b [rad/s]: the torque to command and the clock. wheel_momentum_b = A h, the "
+           "wheels' momentum in the body frame [N m s], when known: the law then cancels the whole "
+           "gyroscopic torque (what the CLI's robust planned runs do, docs/pet-erg.md, section 16.3).")
+      .def_property_readonly("robust", [](const PyPlannedGovernor& g) { return g.setup().params.robust.has_value(); },
+                             "True with margins = \"robust\" (docs/pet-erg.md, section 16.3)")
+      .def_property_readonly("robust_rate",
+                             [](const PyPlannedGovernor& g) {
+                               return g.setup().params.robust ? g.setup().params.robust->rate : 1.0;
+                             },
+                             "the clock rate the robust design flies the plan at (1 without robust margins)")
       .def_property_readonly("plan_duration",
                              [](const PyPlannedGovernor& g) { return g.setup().planned.plan.duration(); })
       .def_property_readonly("k_R", [](const PyPlannedGovernor& g) { return g.setup().params.gains.k_R; })

@@ -116,6 +116,36 @@ def test_a_user_loop_stepping_the_planned_governor_reproduces_the_cli_to_1e_12(t
     assert worst_sigma <= 1e-12
 
 
+def test_a_user_loop_stepping_the_robust_planned_governor_reproduces_the_cli_to_1e_12(tmp_path):
+    # Robust margins (docs/pet-erg.md, section 16.3): the same replay on the robust example's 50 Hz
+    # flight loop without sensor errors (the measurement is the trajectory's state), so the clock's
+    # wait, jump to the design's rate and coast are the CLI's.
+    text = (REPO / "examples" / "pet_erg_slew170_planned_robust.toml").read_text()
+    start = text.index("[imperfections]")
+    text = text[:start] + text[text.index("[simulation]"):]
+    text = text.replace("output_interval = 0.5", "output_interval = 0.02")
+    path = tmp_path / "planned_robust.toml"
+    path.write_text(text)
+    cli = ag.run(path)
+    assert cli.summary["outcome"] == "converged"
+    robust = cli.summary["planned"]["robust"]
+    assert robust["errors_within_bounds"]
+    gov = ag.PlannedGovernor.from_scenario(str(path))
+    assert gov.robust
+    assert gov.robust_rate == robust["rate"]
+    gov.reset(0.0)
+    worst_tau = worst_sigma = 0.0
+    for i, t in enumerate(cli["t"]):
+        q = np.array([cli["q_w"][i], cli["q_x"][i], cli["q_y"][i], cli["q_z"][i]])
+        omega = np.array([cli["omega_x"][i], cli["omega_y"][i], cli["omega_z"][i]])
+        out = gov.step(t, ag.quat_to_rotation(q), omega, wheel_momentum_b=np.zeros(3))
+        tau = np.array([cli["tau_x"][i], cli["tau_y"][i], cli["tau_z"][i]])
+        worst_tau = max(worst_tau, float(np.max(np.abs(out.tau_b - tau))) / gov.tau_max)
+        worst_sigma = max(worst_sigma, abs(out.sigma - cli["s"][i]) / gov.plan_duration)
+    assert worst_tau <= 1e-12
+    assert worst_sigma <= 1e-12
+
+
 def test_the_planned_governor_refuses_what_the_cli_refuses(tmp_path):
     with pytest.raises(ag.InputError, match=r'pet_erg_slew170\.toml:\d+:\d+: governor: .*needs governor = "planned"'):
         ag.PlannedGovernor.from_scenario(str(REPO / "examples" / "pet_erg_slew170.toml"))

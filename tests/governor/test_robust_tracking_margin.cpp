@@ -132,6 +132,16 @@ TEST(RobustTrackingMargin, TheProvedPeaksHoldAgainstATorqueErrorAtItsBound) {
   }
 }
 
+TEST(RobustTrackingMargin, NoErrorAtAllProvesZeroPeaks) {
+  RobustTrackingInputs in;
+  in.gains = {1.0, 2.0};
+  in.control_period = 0.1;
+  const RobustTrackingMargin m = compute_robust_tracking_margin(in);
+  EXPECT_EQ(m.e_R_max, 0.0);
+  EXPECT_EQ(m.rate_error_max, 0.0);
+  EXPECT_EQ(m.feedback_torque_max, 0.0);
+}
+
 TEST(RobustTrackingMargin, ATorqueErrorBeyondTheGainsIsRefusedWithItsNumbers) {
   RobustTrackingInputs in;
   in.gains = {0.01, 0.1};

@@ -314,8 +314,10 @@ RobustTrackingMargin compute_robust_tracking_margin(const RobustTrackingInputs& 
   const Peaks top{p.x * up, p.y * up, p.u * up, p.W * up};
   RobustTrackingMargin at_top = m;
   const Peaks check = converged ? bound_peaks(in, k, top, at_top) : Peaks{};
-  const bool strict =
-      converged && top.x <= x_cap && check.x < top.x && check.y < top.y && check.u < top.u && check.W <= top.W;
+  // (A component that the bounds leave at zero is zero: no error drives it.)
+  const auto below = [](double bound, double at) { return bound < at || (bound == 0.0 && at == 0.0); };
+  const bool strict = converged && top.x <= x_cap && below(check.x, top.x) && below(check.y, top.y) &&
+                      below(check.u, top.u) && check.W <= top.W;
   require_tracking(strict, "the imperfections' torque error w = " + four_digits(m.torque_error) + " N m (hold " +
                                four_digits(m.hold_error) + ", state " + four_digits(m.state_error) +
                                ", disturbance " + four_digits(m.disturbance) + ") leaves no bounded tracking "

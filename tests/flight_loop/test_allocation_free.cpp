@@ -45,8 +45,10 @@
 #include "attiguard/plan/slew_planner.hpp"
 #include "attiguard/scenario/dispersion.hpp"
 #include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/read_mission.hpp"
 #include "attiguard/scenario/read_pet_erg.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
+#include "attiguard/sim/mission_slews.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
 
@@ -490,6 +492,35 @@ TEST(AllocationFree, PlannedGovernorStepFlyingAPlanWithDelay) {
   }
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls << " PlannedGovernor steps";
   EXPECT_GT(sigma, 0.0);  // the clock moved
+}
+
+// docs/mission.md, "Planned slews": a planned mission's attitude loop allocates only at a slew's
+// start (planning is set-up code); the steps that fly the plan and those that track R_d between
+// slews reach no heap.
+TEST(AllocationFree, PlannedMissionStepsAfterTheSlewStart) {
+  const sim::MissionScenario sc = scenario::parse_mission(scenario::load_document(
+      std::string(ATTIGUARD_SOURCE_DIR) + "/examples/mission_sun_constrained_planned.toml"));
+  sim::MissionSlews slews(sc);
+  const dynamics::RigidBody body(sc.waypoint.J);
+  const double h = sc.waypoint.control_period;
+  dynamics::SpacecraftState y;
+  y.R[0] = sc.waypoint.R0_ib;
+  y.x.setZero();
+  guidance::MissionCommand cmd;
+  cmd.q_id = lie::rotation_to_quat(sc.waypoint.R0_ib * lie::exp(Vec3(0.0, 0.0, 0.5 * std::numbers::pi)));
+  (void)slews.step(0.0, y, cmd);  // the slew's start: planned here
+  ASSERT_EQ(slews.state().slew, 0);
+  Mat3 R_ib = y.R[0];
+  Vec3 omega_b = Vec3::Zero();
+  g_allocations = 0;
+  for (int k = 1; k < kCalls / 10; ++k) {
+    const Vec3 tau_b = counted([&] { return slews.step(k * h, y, cmd).tau_b; });
+    propagate_attitude(body, tau_b, h, R_ib, omega_b);
+    y.R[0] = R_ib;
+    y.x.segment<3>(0) = omega_b;
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << kCalls / 10 << " planned mission steps";
+  EXPECT_EQ(slews.state().slew, -1);  // the plan was flown, then R_d tracked
 }
 
 // Issue 49, item 7: a worker thread whose state cannot be allocated (std::bad_alloc inside

@@ -101,6 +101,11 @@ def hostile_vec3(rng, base):
     yield from WRONG_TYPES
 
 
+def hostile_optional_vec3(rng, base):
+    """An optional 3-vector: None leaves it out, every other hostile value is refused."""
+    yield from (x for x in hostile_vec3(rng, base) if x is not None)
+
+
 def hostile_matrix(rng, base):
     yield from non_finite(base, rng)
     yield from wrong_shapes(base)
@@ -556,7 +561,8 @@ SPECS: dict[str, tuple[Callable[[], Callable], dict[str, Arg], bool]] = {
                               {"t0": Arg(lambda rng: rng.uniform(-10, 10), hostile_real)}, True),
     "PlannedGovernor.step": (_method(_reset_planned, "step"),
                              {"t": Arg(lambda rng: rng.uniform(0.0, 10.0), hostile_real), "R": ROT(),
-                              "omega_b": VEC()}, True),
+                              "omega_b": VEC(),
+                              "wheel_momentum_b": Arg(_vec, hostile_optional_vec3, True)}, True),
     "Governor.reset": (_method(_governor, "reset"),
                        {"t0": Arg(lambda rng: rng.uniform(-10, 10), hostile_real), "R_g0": ROT()}, True),
     "Governor.step": (_method(_reset_governor, "step"),

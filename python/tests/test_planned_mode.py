@@ -90,6 +90,21 @@ def _flight_loop_scenario(tmp_path: Path) -> Path:
     return path
 
 
+def _replay(gov, cli, **step_keywords):
+    """Steps `gov` from t = 0 through the rows of a CLI run (each row a control instant, its state
+    the measurement); returns the worst |tau - tau_cli|/tau_max and |sigma - s_cli|/T_p."""
+    gov.reset(0.0)
+    worst_tau = worst_sigma = 0.0
+    for i, t in enumerate(cli["t"]):
+        q = np.array([cli["q_w"][i], cli["q_x"][i], cli["q_y"][i], cli["q_z"][i]])
+        omega = np.array([cli["omega_x"][i], cli["omega_y"][i], cli["omega_z"][i]])
+        out = gov.step(t, ag.quat_to_rotation(q), omega, **step_keywords)
+        tau = np.array([cli["tau_x"][i], cli["tau_y"][i], cli["tau_z"][i]])
+        worst_tau = max(worst_tau, float(np.max(np.abs(out.tau_b - tau))) / gov.tau_max)
+        worst_sigma = max(worst_sigma, abs(out.sigma - cli["s"][i]) / gov.plan_duration)
+    return worst_tau, worst_sigma
+
+
 def test_a_user_loop_stepping_the_planned_governor_reproduces_the_cli_to_1e_12(tmp_path):
     # The CLI's flight loop at 10 Hz commands at each control instant what PlannedGovernor.step
     # returns for the state there: replayed row by row in a Python loop, the same torques and
@@ -100,16 +115,7 @@ def test_a_user_loop_stepping_the_planned_governor_reproduces_the_cli_to_1e_12(t
     gov = ag.PlannedGovernor.from_scenario(str(path))
     assert gov.plan_duration == pytest.approx(cli.summary["planned"]["plan"]["duration"], rel=1e-12)
     assert gov.k_R == cli.summary["planned"]["k_R"]
-    gov.reset(0.0)
-    tau_max = gov.tau_max
-    worst_tau = worst_sigma = 0.0
-    for i, t in enumerate(cli["t"]):
-        q = np.array([cli["q_w"][i], cli["q_x"][i], cli["q_y"][i], cli["q_z"][i]])
-        omega = np.array([cli["omega_x"][i], cli["omega_y"][i], cli["omega_z"][i]])
-        out = gov.step(t, ag.quat_to_rotation(q), omega)
-        tau = np.array([cli["tau_x"][i], cli["tau_y"][i], cli["tau_z"][i]])
-        worst_tau = max(worst_tau, float(np.max(np.abs(out.tau_b - tau))) / tau_max)
-        worst_sigma = max(worst_sigma, abs(out.sigma - cli["s"][i]) / gov.plan_duration)
+    worst_tau, worst_sigma = _replay(gov, cli)
     print(f"replay of {len(cli['t'])} control instants: worst |tau - tau_cli|/tau_max {worst_tau:.3g}, "
           f"worst |sigma - s_cli|/T_p {worst_sigma:.3g}")
     assert worst_tau <= 1e-12
@@ -133,15 +139,7 @@ def test_a_user_loop_stepping_the_robust_planned_governor_reproduces_the_cli_to_
     gov = ag.PlannedGovernor.from_scenario(str(path))
     assert gov.robust
     assert gov.robust_rate == robust["rate"]
-    gov.reset(0.0)
-    worst_tau = worst_sigma = 0.0
-    for i, t in enumerate(cli["t"]):
-        q = np.array([cli["q_w"][i], cli["q_x"][i], cli["q_y"][i], cli["q_z"][i]])
-        omega = np.array([cli["omega_x"][i], cli["omega_y"][i], cli["omega_z"][i]])
-        out = gov.step(t, ag.quat_to_rotation(q), omega, wheel_momentum_b=np.zeros(3))
-        tau = np.array([cli["tau_x"][i], cli["tau_y"][i], cli["tau_z"][i]])
-        worst_tau = max(worst_tau, float(np.max(np.abs(out.tau_b - tau))) / gov.tau_max)
-        worst_sigma = max(worst_sigma, abs(out.sigma - cli["s"][i]) / gov.plan_duration)
+    worst_tau, worst_sigma = _replay(gov, cli, wheel_momentum_b=np.zeros(3))
     assert worst_tau <= 1e-12
     assert worst_sigma <= 1e-12
 

@@ -84,9 +84,7 @@ RateChoice PlannedGovernor::robust_choice(double t, double sigma_act, double rat
   c.rate = start ? rb.rate : rate_act;
   c.accel = 0.0;
   c.rule = start ? RateRule::jump : RateRule::coast;
-  constexpr double kTiny = std::numeric_limits<double>::min();
-  c.V = std::max(e.e_R.norm() / std::max(kTiny, rb.attitude_error + rb.attitude_allowance),
-                 e.e_Omega.norm() / std::max(kTiny, rb.rate_error + rb.rate_allowance));
+  c.V = tracking_error_ratio(e, rb.attitude_error + rb.attitude_allowance, rb.rate_error + rb.rate_allowance);
   c.gamma_g = 1.0;
   c.torque_bound = rb.torque_bound;
   c.admissible = c.V <= 1.0;

@@ -13,6 +13,8 @@
 ///   gov.reset(t0);
 ///   loop: const PlannedOutput& out = gov.step(t, R_ib, omega_b);       // out.tau_b, out.sigma, …
 
+#include <algorithm>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -36,6 +38,14 @@ struct PlannedRobust {
   double gate_attitude{0.0};       ///< the clock starts once the measured ‖e_R‖ ≤ this …
   double gate_rate{0.0};           ///< … and the measured ‖e_Ω‖ ≤ this [rad/s]
 };
+
+/// max(‖e_R‖/attitude, ‖e_Ω‖/rate): the tracking errors against bounds on them, ≤ 1 when both
+/// hold (docs/pet-erg.md, section 16.3); a zero bound admits only a zero error.
+[[nodiscard]] inline double tracking_error_ratio(const control::TrackingError& e, double attitude,
+                                                 double rate) noexcept {
+  constexpr double kTiny = std::numeric_limits<double>::min();
+  return std::max(e.e_R.norm() / std::max(kTiny, attitude), e.e_Omega.norm() / std::max(kTiny, rate));
+}
 
 /// Parameters of the planned mode (docs/pet-erg.md, section 16.2).
 struct PlannedGovernorParams {

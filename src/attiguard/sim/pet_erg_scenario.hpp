@@ -5,6 +5,7 @@
 /// PET-ERG paper. Read from a scenario file by scenario::parse_pet_erg (keys:
 /// docs/scenario-format.md, section "pet_erg"); consumed by sim/pet_erg_run.
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,17 @@ struct PetErgImperfections {
   /// ≥ ‖attitude_bias‖ [rad] and ≥ ‖rate_bias‖ [rad/s]; default the biases' own norms.
   double attitude_bias_bound{0.0};
   double rate_bias_bound{0.0};
+
+  /// β: the attitude bias's declared bound, or the bias itself when larger [rad]
+  /// (docs/pet-erg.md, sections 13 and 16.3).
+  [[nodiscard]] double attitude_bias_max() const noexcept {
+    return std::max(sensor.attitude_bias_b.norm(), attitude_bias_bound);
+  }
+  /// σ_ω: the rate bias's declared bound (or the bias when larger) plus the rate noise [rad/s]
+  /// (docs/pet-erg.md, sections 13 and 16.2).
+  [[nodiscard]] double rate_error_max() const noexcept {
+    return std::max(sensor.rate_bias_b.norm(), rate_bias_bound) + sensor.rate_noise;
+  }
 };
 
 /// `[plan]` of a pet_erg scenario: the slew planner's settings (docs/slew-planner.md, "Options").

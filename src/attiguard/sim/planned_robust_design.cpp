@@ -36,20 +36,20 @@ namespace {
 
 constexpr double kGateFactor = 1.25;  ///< the gate over the errors the torque error keeps at rest
 
-/// The robust margin's inputs (docs/pet-erg.md, section 16.3, "Assumptions"): the declared bounds
-/// of the scenario (section 13's), the reference's extremes at the clock rate ṡ and the start.
+/// The robust margin's inputs with the plan flown at ṡ = 1 (docs/pet-erg.md, section 16.3,
+/// "Assumptions"): the declared bounds of the scenario (section 13's), the plan's extremes and the
+/// start. Everything here but the reference's extremes is independent of the clock rate.
 governor::RobustTrackingInputs tracking_inputs(const PetErgScenario& sc, const governor::SlewPlan& plan,
-                                               const governor::PlanWindow& w, const control::TrackingGains& g,
-                                               double rate) {
+                                               const governor::PlanWindow& w, const control::TrackingGains& g) {
   const governor::RobustMarginInputs b = governor::margin_inputs(design_inputs(sc));
   governor::RobustTrackingInputs in;
   in.gains = g;
   in.J = sc.params.J;
   in.control_period = sc.control_period;
   in.delay_periods = b.delay_periods;
-  in.attitude_bias = std::max(b.attitude_bias, sc.imperfections.sensor.attitude_bias_b.norm());
+  in.attitude_bias = sc.imperfections.attitude_bias_max();
   in.attitude_noise = b.attitude_noise;
-  in.rate_error = std::max(b.rate_error, sc.imperfections.sensor.rate_bias_b.norm() + sc.imperfections.sensor.rate_noise);
+  in.rate_error = sc.imperfections.rate_error_max();
   in.quantisation_error = b.quantisation_error;
   in.disturbance = b.disturbance;
   in.wheel_momentum_max = b.wheel_momentum_max;
@@ -58,51 +58,58 @@ governor::RobustTrackingInputs tracking_inputs(const PetErgScenario& sc, const g
   lie::Vec3 H0 = sc.params.J * sc.omega0_b;
   for (const dynamics::ReactionWheel& wheel : sc.wheels) H0 += wheel.axis_b.normalized() * wheel.momentum0;
   in.total_momentum_max = H0.norm() + b.disturbance * sc.duration;
-  // Flown at the constant clock rate ṡ: the reference's rate, acceleration and its change scale
-  // by ṡ, ṡ², ṡ³.
-  in.reference_rate_max = rate * w.omega_max;
-  in.reference_accel_max = rate * rate * w.omega_dot_max;
-  in.reference_jerk_max = rate * rate * rate * plan_feedforward_rate(plan, w.omega_max);
-  const governor::SlewPlanSample end = plan.evaluate(plan.duration());
-  in.reference_end_accel = rate * rate * end.omega_dot_b.norm();
+  in.reference_rate_max = w.omega_max;
+  in.reference_accel_max = w.omega_dot_max;
+  in.reference_jerk_max = plan_feedforward_rate(plan, w.omega_max);
+  in.reference_end_accel = plan.evaluate(plan.duration()).omega_dot_b.norm();
   // The start: on the plan's first attitude, at rest but for ω₀, seen through the bias.
   in.initial_attitude_error = in.attitude_bias;
   in.initial_rate_error = sc.omega0_b.norm();
   return in;
 }
 
+/// `in` (the plan at ṡ = 1) flown at the constant clock rate ṡ: the reference's rate,
+/// acceleration and its change scale by ṡ, ṡ², ṡ³ (docs/pet-erg.md, section 16.3).
+governor::RobustTrackingInputs at_rate(governor::RobustTrackingInputs in, double rate) {
+  in.reference_rate_max *= rate;
+  in.reference_accel_max *= rate * rate;
+  in.reference_jerk_max *= rate * rate * rate;
+  in.reference_end_accel *= rate * rate;
+  return in;
+}
+
 }  // namespace
 
 PlannedRobustBasis planned_robust_basis(const PetErgScenario& sc, const governor::ProgressGovernor& progress) {
-  const governor::PlanWindow w = progress.ahead(0.0);
   PlannedRobustBasis b;
-  governor::RobustTrackingInputs at_rest = tracking_inputs(sc, progress.plan(), w, progress.gains(), 0.0);
-  b.l1 = governor::tracking_l1_gains(at_rest.J, at_rest.gains);
+  b.window = progress.ahead(0.0);
+  b.flight = tracking_inputs(sc, progress.plan(), b.window, progress.gains());
+  b.l1 = governor::tracking_l1_gains(b.flight.J, b.flight.gains);
   // The wait: the clock held at σ = 0 (the reference at rest) from the scenario's start until
   // the measured errors pass the gate; the gate is 1.25 times the errors the torque error alone
   // keeps at rest, plus the sensors' errors, so that the wait ends.
+  governor::RobustTrackingInputs at_rest = at_rate(b.flight, 0.0);
   b.rest = governor::compute_robust_tracking_margin(at_rest, b.l1);
   at_rest.initial_attitude_error = 0.0;
   at_rest.initial_rate_error = 0.0;
   const governor::RobustTrackingMargin forced = governor::compute_robust_tracking_margin(at_rest, b.l1);
   b.gate_attitude = kGateFactor * forced.e_R_max + at_rest.attitude_noise;
   b.gate_rate = kGateFactor * forced.rate_error_max + at_rest.rate_error;
+  // The flight starts from the gate (the true errors within it plus the sensors' errors).
+  b.flight.initial_attitude_error = std::asin(std::min(1.0, b.gate_attitude + b.flight.attitude_noise));
+  b.flight.initial_rate_error = b.gate_rate + b.flight.rate_error;
   return b;
 }
 
 PlannedRobustDesign planned_robust_design(const PetErgScenario& sc, const governor::ProgressGovernor& progress,
                                           const PlannedRobustBasis& basis, double rate) {
-  const governor::SlewPlan& plan = progress.plan();
-  const governor::PlanWindow w = progress.ahead(0.0);
+  const governor::PlanWindow& w = basis.window;
   PlannedRobustDesign d;
   d.rate = rate;
   d.rest = basis.rest;
   d.gate_attitude = basis.gate_attitude;
   d.gate_rate = basis.gate_rate;
-  // The flight: from the gate (the true errors within it plus the sensors' errors) at ṡ.
-  governor::RobustTrackingInputs in = tracking_inputs(sc, plan, w, progress.gains(), rate);
-  in.initial_attitude_error = std::asin(std::min(1.0, d.gate_attitude + in.attitude_noise));
-  in.initial_rate_error = d.gate_rate + in.rate_error;
+  const governor::RobustTrackingInputs in = at_rate(basis.flight, rate);
   d.margin = governor::compute_robust_tracking_margin(in, basis.l1);
   const governor::RobustTrackingMargin& m = d.margin;
   const double theta = std::max(m.attitude_error_max, d.rest.attitude_error_max);

@@ -42,6 +42,8 @@ struct PlannedRobustDesign {
 /// What the robust design computes once per pair of gains (docs/pet-erg.md, section 16.3): the
 /// L1 norms, the wait at σ = 0 from the scenario's start and the gate that ends it.
 struct PlannedRobustBasis {
+  governor::PlanWindow window;             ///< the plan's extremes (at ṡ = 1)
+  governor::RobustTrackingInputs flight;   ///< the flight's inputs at ṡ = 1, from the gate
   governor::TrackingGainsL1 l1;
   governor::RobustTrackingMargin rest;
   double gate_attitude{0.0};

@@ -50,18 +50,14 @@ constexpr double kStartShare = 0.5;         ///< k_Ω ‖ω_0‖ ≤ kStartShare
 /// The sensors' attitude and rate errors the derivation assumes [rad], [rad/s]: the declared
 /// bias bounds of section 13 when larger than the biases, plus the noises.
 double attitude_error(const PetErgScenario& sc) {
-  const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
-  return std::max(s.attitude_bias_b.norm(), sc.imperfections.attitude_bias_bound) + s.attitude_noise;
+  return sc.imperfections.attitude_bias_max() + sc.imperfections.sensor.attitude_noise;
 }
 /// The attitude error that costs the law torque: with robust margins the bias is geometric (the
 /// analysis frame R B, docs/pet-erg.md section 16.3) and only the noise counts.
 double torque_attitude_error(const PetErgScenario& sc) {
   return sc.margins == governor::Margins::robust ? sc.imperfections.sensor.attitude_noise : attitude_error(sc);
 }
-double rate_error(const PetErgScenario& sc) {
-  const dynamics::AttitudeSensor& s = sc.imperfections.sensor;
-  return std::max(s.rate_bias_b.norm(), sc.imperfections.rate_bias_bound) + s.rate_noise;
-}
+double rate_error(const PetErgScenario& sc) { return sc.imperfections.rate_error_max(); }
 
 /// The torque the tracking law spends on the sensors' errors and the quantisation at the gains
 /// (k_Ω e_ω + k_R e_θ + q√3/2) [N·m] (docs/pet-erg.md, section 16.2, "Defaults").
@@ -370,10 +366,8 @@ class PlannedFlight {
     if (const auto& robust = gov_.params().robust) {
       // The true errors seen through the bias against the reference, as a ratio to the peaks
       // the design proved (section 16.3): at most 1 by the guarantee.
-      const control::TrackingError e = control::tracking_error(s.R[0] * bias_frame_, s.x, p.reference);
-      constexpr double kTiny = std::numeric_limits<double>::min();
-      out.W = std::max(e.e_R.norm() / std::max(kTiny, robust->attitude_error),
-                       e.e_Omega.norm() / std::max(kTiny, robust->rate_error));
+      out.W = governor::tracking_error_ratio(control::tracking_error(s.R[0] * bias_frame_, s.x, p.reference),
+                                             robust->attitude_error, robust->rate_error);
       out.gamma = 1.0;
     }
     out.gamma_d = p.choice.torque_bound;

@@ -106,6 +106,9 @@ TEST(PlannedRobust, RefusalsAreLocatedAtTheirKeys) {
   const std::string strong = replaced(text, "disturbance_bound = 0.001", "disturbance_bound = 0.3");
   EXPECT_NE(refusal_of(strong).find("control.margins: robust margins of the planned mode"), std::string::npos)
       << refusal_of(strong);
+  // … with why, at the derived gains: the torque error's parts.
+  EXPECT_NE(refusal_of(strong).find("at the derived gains: "), std::string::npos) << refusal_of(strong);
+  EXPECT_NE(refusal_of(strong).find("disturbance 0.3"), std::string::npos) << refusal_of(strong);
 }
 
 }  // namespace

@@ -175,6 +175,21 @@ std::optional<PlannedRobustDesign> fastest_rate(const PetErgScenario& sc, const 
   return best;
 }
 
+/// Why the derived gains fail at the slowest clock rate, for a refusal: the proof's own refusal,
+/// or the torque the proved errors need against the limit, with the torque error's parts.
+std::string slowest_design_summary(const PetErgScenario& sc, const governor::SlewPlan& plan, const PlannedFigures& f) {
+  try {
+    const governor::ProgressGovernor progress(plan, sc.cones, f.tau_max, f.gains, sc.control_period, 0.0);
+    const PlannedRobustDesign d = planned_robust_design(sc, progress, kSlowestRate);
+    const governor::RobustTrackingMargin& m = d.margin;
+    return "torque needed " + four_digits(d.torque_needed) + " N m (torque error " + four_digits(m.torque_error) +
+           " N m: hold " + four_digits(m.hold_error) + ", state " + four_digits(m.state_error) + ", disturbance " +
+           four_digits(m.disturbance) + ")";
+  } catch (const SetupError& e) {
+    return e.what();
+  }
+}
+
 /// The tracking gains at ω_n (docs/pet-erg.md, section 16.2): k_R = J_max ω_n², k_Ω = 2ζ J_max ω_n.
 control::TrackingGains gains_at(const PetErgScenario& sc, double omega_n) {
   const double J_max = Eigen::SelfAdjointEigenSolver<Mat3>(sc.params.J).eigenvalues().maxCoeff();
@@ -211,7 +226,8 @@ void plan_robust(const PetErgScenario& sc, const plan::PlannerOptions& options, 
       throw PlannedSetupRefusal("control", "margins", "robust margins of the planned mode: the imperfections' "
                                 "bounds leave no clock rate down to " + four_digits(kSlowestRate) +
                                 " whose proved errors keep the torque within " + four_digits(f.tau_max) +
-                                " N m, at any of the tried gains (docs/pet-erg.md, section 16.3)");
+                                " N m, at any of the tried gains (docs/pet-erg.md, section 16.3); at the "
+                                "derived gains: " + slowest_design_summary(sc, s.planned.plan, f));
     }
     f.robust = best;
     if (gains_free) {

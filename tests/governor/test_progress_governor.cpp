@@ -132,6 +132,33 @@ TEST(ProgressGovernor, EveryStateOfTheLevelSetKeepsTheConeAndTheTorqueBound) {
   }
 }
 
+// The feedforward's error at no attitude error (R = R_d): the law's gyroscopic and transport
+// terms beyond the reference's, B(e, v) + e × J e, against the bound ½(λ_max − λ_min)E² +
+// (2λ_max − λ_min) E ṡ‖ω_p‖ (docs/pet-erg.md, section 16.1, "Torque"). Sampled over the
+// crafts' inertias: never above it, and within 45 % of it at the worst sample (the former bound
+// 3λ_max E ṡ‖ω_p‖ + λ_max E², twice as loose, fails the second check).
+TEST(ProgressGovernor, TheFeedforwardErrorBoundsTheGyroscopicTermsTightly) {
+  std::mt19937_64 rng(20261207);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  for (const Craft& c : crafts()) {
+    const ProgressGovernor g = governor_of(c, 0.1);
+    const Mat3& J = c.problem.J_b;
+    double worst = 0.0;
+    for (int trial = 0; trial < 20000; ++trial) {
+      const Vec3 v = Vec3(n01(rng), n01(rng), n01(rng)) * 0.05;
+      const Vec3 e = Vec3(n01(rng), n01(rng), n01(rng)) * 0.05 * std::exp(n01(rng));
+      const control::TrackingReference ref{Mat3::Identity(), v, Vec3::Zero()};
+      const Vec3 law = control::tracking_torque(J, Mat3::Identity(), v + e, ref, {0.0, 0.0});
+      const Vec3 error = law - v.cross(J * v);
+      const PlanWindow w{v.norm(), 0.0, 0.0, 0.0};
+      const double bound = g.feedforward_error(0.0, e.norm(), 1.0, w);
+      ASSERT_LE(error.norm(), bound * (1.0 + 1e-12)) << c.name << " trial " << trial;
+      worst = std::max(worst, error.norm() / bound);
+    }
+    EXPECT_GT(worst, 0.55) << c.name;
+  }
+}
+
 /// The body at attitude error θ about `axis` and rate error e_Ω from the reference.
 struct Offset {
   Mat3 R;

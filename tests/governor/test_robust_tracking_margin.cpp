@@ -158,5 +158,34 @@ TEST(RobustTrackingMargin, ATorqueErrorBeyondTheGainsIsRefusedWithItsNumbers) {
   }
 }
 
+// With a delay, a run's first period has no torque (a start pulse); a clock started while the
+// loop already runs has none (docs/pet-erg.md, section 16.3, "The wait"): its peaks lose the
+// pulse's share and nothing else; without a delay the two are the same.
+TEST(RobustTrackingMargin, AClockStartedWhileTheLoopRunsHasNoStartPulse) {
+  RobustTrackingInputs in;
+  in.gains = {0.2, 1.6};
+  in.J = Vec3(3.0, 4.0, 5.0).asDiagonal();
+  in.control_period = 0.05;
+  in.delay_periods = 1;
+  in.disturbance = 0.002;
+  in.applied_torque_max = 0.1;
+  in.reference_rate_max = 0.02;
+  in.initial_attitude_error = 0.01;
+  in.initial_rate_error = 0.002;
+  const RobustTrackingMargin at_start = compute_robust_tracking_margin(in);
+  in.torque_from_start = true;
+  const RobustTrackingMargin running = compute_robust_tracking_margin(in);
+  EXPECT_GT(at_start.start_error, 0.0);
+  EXPECT_EQ(running.start_error, 0.0);
+  EXPECT_LT(running.e_R_max, at_start.e_R_max);
+  EXPECT_LT(running.feedback_torque_max, at_start.feedback_torque_max);
+  in.delay_periods = 0;
+  const RobustTrackingMargin no_delay_running = compute_robust_tracking_margin(in);
+  in.torque_from_start = false;
+  const RobustTrackingMargin no_delay = compute_robust_tracking_margin(in);
+  EXPECT_EQ(no_delay.e_R_max, no_delay_running.e_R_max);
+  EXPECT_EQ(no_delay.feedback_torque_max, no_delay_running.feedback_torque_max);
+}
+
 }  // namespace
 }  // namespace attiguard::governor::robust_tracking_test

@@ -32,6 +32,12 @@ double ProgressClock::sigma_at(double t) const noexcept {
 }
 
 void PlannedGovernor::saturate(const lie::Vec3& law_b, PlannedOutput& o) const noexcept {
+  if (params_.slabs.count > 0) {
+    // The gauge of the wheels' slabs: the command scaled onto their boundary when beyond it.
+    o.demand_ratio = params_.slabs.gauge(law_b);
+    o.tau_b = o.demand_ratio > 1.0 ? lie::Vec3(law_b * ((1.0 - 4e-16) / o.demand_ratio)) : law_b;
+    return;
+  }
   const double norm = law_b.norm();
   o.demand_ratio = norm / params_.tau_max;
   // Scaled a few ulps inside the bound, so that the rounded norm never exceeds τ_max.

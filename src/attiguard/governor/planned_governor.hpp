@@ -20,6 +20,7 @@
 
 #include "attiguard/control/so3_tracking.hpp"
 #include "attiguard/governor/progress_governor.hpp"
+#include "attiguard/governor/torque_slabs.hpp"
 
 namespace attiguard::governor {
 
@@ -37,6 +38,8 @@ struct PlannedRobust {
   double torque_bound{0.0};        ///< the command's bound over the flight [N·m]
   double gate_attitude{0.0};       ///< the clock starts once the measured ‖e_R‖ ≤ this …
   double gate_rate{0.0};           ///< … and the measured ‖e_Ω‖ ≤ this [rad/s]
+  /// The command's largest gauge against the wheels' slabs (TorqueSlabs), ≤ 1; 0 without wheels
+  double torque_ratio{0.0};
 };
 
 /// max(‖e_R‖/attitude, ‖e_Ω‖/rate): the tracking errors against bounds on them, ≤ 1 when both
@@ -62,6 +65,10 @@ struct PlannedGovernorParams {
   int delay_periods{0};
   /// Robust margins (docs/pet-erg.md, section 16.3); empty: the nominal thresholds of 16.1.
   std::optional<PlannedRobust> robust;
+  /// The set the command is saturated to: with no slabs (the default) the ball ‖τ‖ ≤ tau_max;
+  /// with robust margins and wheels the wheels' slabs within the declared τ_max (docs/pet-erg.md,
+  /// section 16.3, "Wheels").
+  TorqueSlabs slabs{};
 };
 
 /// The plan's clock between two sampling instants (docs/pet-erg.md, section 16.1): from σ_k at
@@ -86,10 +93,11 @@ struct ProgressClock {
 
 /// Everything the planned mode knows at one instant (docs/pet-erg.md, section 16.2).
 struct PlannedOutput {
-  /// The torque commanded [N·m]: the tracking law's, scaled onto ‖τ‖ = τ_max where it asks for
-  /// more (the flight software's saturation; docs/pet-erg.md, section 16.2, "Saturation")
+  /// The torque commanded [N·m]: the tracking law's, scaled onto ‖τ‖ = τ_max (or onto the
+  /// wheels' slabs, PlannedGovernorParams::slabs) where it asks for more (the flight software's
+  /// saturation; docs/pet-erg.md, section 16.2, "Saturation")
   lie::Vec3 tau_b{lie::Vec3::Zero()};
-  double demand_ratio{0.0};                ///< ‖τ‖/τ_max the law asked for (> 1: saturated)
+  double demand_ratio{0.0};                ///< ‖τ‖/τ_max (with slabs: their gauge) the law asked for (> 1: saturated)
   control::TrackingReference reference;    ///< R_p(σ), ṡ ω_p(σ), ṡ² ω̇_p(σ) (R_d at rest at σ ≥ T_p)
   double sigma{0.0};                       ///< the plan's clock σ ∈ [0, T_p] [s]
   double rate{0.0};                        ///< ṡ at the instant

@@ -182,7 +182,12 @@ double ProgressGovernor::feedforward_error(double theta, double E, double rate, 
   const double a = std::abs(accel);
   const double spread =
       (lambda_max_ - lambda_min_) * (s2 * (w.omega_max * w.omega_max + w.omega_dot_max) + a * w.omega_max);
-  return theta * spread + lambda_max_ * E * E + 3.0 * lambda_max_ * E * rate * w.omega_max;
+  // With ω = v + e_Ω (v = R_e ω_d) the law's gyroscopic and transport terms leave, beyond the
+  // reference's, B(e, v) + e × J e with B(e, v) = v × J e + e × J v − J (e × v). Writing
+  // J = c I + D, c = ½(λ_max + λ_min), ‖D‖ ≤ ½(λ_max − λ_min): B = c v × e + (terms in D), so
+  // ‖B‖ ≤ (c + 3‖D‖)‖e‖‖v‖ = (2λ_max − λ_min)‖e‖‖v‖, and e × J e = e × D e ≤ ½(λ_max − λ_min)‖e‖².
+  return theta * spread + 0.5 * (lambda_max_ - lambda_min_) * E * E +
+         (2.0 * lambda_max_ - lambda_min_) * E * rate * w.omega_max;
 }
 
 double ProgressGovernor::reference_torque(double rate, const PlanWindow& w, double accel) const noexcept {

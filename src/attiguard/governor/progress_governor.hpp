@@ -78,7 +78,7 @@ class ProgressGovernor {
   /// The tracking law's torque beyond its feedback −k_R e_R − k_Ω e_Ω and the reference's
   /// torque, for an attitude error angle θ and a rate error ‖e_Ω‖ ≤ E at ṡ, s̈ over the window
   /// (docs/pet-erg.md, section 16.1, "Torque"): θ (λ_max − λ_min)(ṡ²(‖ω_p‖² + ‖ω̇_p‖) + |s̈|‖ω_p‖)
-  /// + λ_max E² + 3 λ_max E ṡ ‖ω_p‖.
+  /// + ½(λ_max − λ_min) E² + (2λ_max − λ_min) E ṡ ‖ω_p‖.
   [[nodiscard]] double feedforward_error(double theta, double E, double rate, const PlanWindow& w,
                                          double accel = 0.0) const noexcept;
   /// The reference's torque bound over the window, ṡ² max‖τ_p‖ + |s̈| λ_max max‖ω_p‖

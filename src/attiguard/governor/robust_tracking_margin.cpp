@@ -262,7 +262,7 @@ Peaks bound_peaks(const RobustTrackingInputs& in, const Craft& k, const Peaks& p
   // Pulses: zero torque over the first d periods (the law's torque missing), and the
   // feedforward's drop over at most one period at the plan's end.
   const double w0 = in.reference_rate_max + y_free;
-  const double start_pulse = in.delay_periods * in.control_period *
+  const double start_pulse = in.torque_from_start ? 0.0 : in.delay_periods * in.control_period *
                              (u_free + (k.lmax * w0 + in.wheel_momentum_max) * w0 + W);
   const double end_pulse = in.control_period * k.lmax * in.reference_end_accel;
   m.start_error = start_pulse * g.e_R_w_peak;

@@ -42,6 +42,9 @@ struct RobustTrackingInputs {
   double reference_end_accel{0.0};       ///< ‖ω̇_d‖ just before the plan ends (dropped to 0) [rad/s²]
   double initial_attitude_error{0.0};    ///< θ(0) of the analysis frame against the plan's start [rad]
   double initial_rate_error{0.0};        ///< ‖e_Ω(0)‖ = ‖ω(0)‖ (the plan starts at rest) [rad/s]
+  /// The law's torque acts from t = 0 (the loop already runs, as when the clock starts after the
+  /// wait); false: the first delay_periods periods have no torque (a run's start)
+  bool torque_from_start{false};
 };
 
 /// The L1 norms of the error dynamics' impulse responses (docs/pet-erg.md, section 16.3): with

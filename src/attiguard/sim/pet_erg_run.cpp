@@ -463,6 +463,7 @@ nlohmann::json planned_robust_json(const PlannedRobustDesign& d, const PlannedFi
           {"plan_cone_margin_deg", d.plan_cone_margin * kDeg},
           {"torque_needed", d.torque_needed},
           {"torque_limit", d.torque_limit},
+          {"wheel_torque_ratio", d.wheel_slabs ? nlohmann::json(d.torque_ratio) : nlohmann::json(nullptr)},
           {"max_error_ratio", f.max_W_minus_level + 1.0},
           {"errors_within_bounds", f.max_W_minus_level <= 0.0},
           {"convergence_time_over_flown_plan",

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/governor/governor_design.hpp"
 #include "attiguard/governor/progress_governor.hpp"
 #include "attiguard/lie/symmetric_eigen.hpp"
@@ -95,9 +96,19 @@ PlannedRobustBasis planned_robust_basis(const PetErgScenario& sc, const governor
   const governor::RobustTrackingMargin forced = governor::compute_robust_tracking_margin(at_rest, b.l1);
   b.gate_attitude = kGateFactor * forced.e_R_max + at_rest.attitude_noise;
   b.gate_rate = kGateFactor * forced.rate_error_max + at_rest.rate_error;
-  // The flight starts from the gate (the true errors within it plus the sensors' errors).
-  b.flight.initial_attitude_error = std::asin(std::min(1.0, b.gate_attitude + b.flight.attitude_noise));
-  b.flight.initial_rate_error = b.gate_rate + b.flight.rate_error;
+  // The flight starts when the clock does, d periods after the measured errors passed the gate
+  // (the torque computed then acts from there): from the true errors within the gate plus the
+  // sensors' errors, plus what the wait's errors change over those periods (θ̇ ≤ ‖e_Ω‖,
+  // J ė_Ω = −u + w). The loop runs throughout: no period without torque at the clock's start.
+  const double lead = b.flight.delay_periods * b.flight.control_period;
+  const double J_min = lie::symmetric_eigenvalues(b.flight.J)(0);
+  b.flight.initial_attitude_error = std::asin(std::min(1.0, b.gate_attitude + b.flight.attitude_noise)) +
+                                    lead * b.rest.rate_error_max;
+  b.flight.initial_rate_error = b.gate_rate + b.flight.rate_error +
+                                lead * (b.rest.feedback_torque_max + b.rest.torque_error) / J_min;
+  b.flight.torque_from_start = true;
+  // With wheels the command is judged against what they apply unclipped (section 16.3, "Wheels").
+  if (!sc.wheels.empty()) b.slabs = governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
   return b;
 }
 
@@ -117,19 +128,30 @@ PlannedRobustDesign planned_robust_design(const PetErgScenario& sc, const govern
   d.plan_cone_margin = sc.cones.empty() ? std::numeric_limits<double>::infinity() : w.cone_margin_min;
   // The command: the reference's torque, the feedback's peak, the feedforward's errors at the
   // peaks, the command error (section 16.3, "Torque"); in the flight and in the wait.
-  const double flight = progress.reference_torque(rate, w) + m.feedback_torque_max +
-                        progress.feedforward_error(m.attitude_error_max, m.rate_error_max, rate, w) + m.command_error;
+  // The command is the reference's torque ṡ² τ_p(σ) plus an error of norm at most E.
+  const double flight_error = m.feedback_torque_max +
+                              progress.feedforward_error(m.attitude_error_max, m.rate_error_max, rate, w) +
+                              m.command_error;
+  const double flight = progress.reference_torque(rate, w) + flight_error;
   const double wait = d.rest.feedback_torque_max +
                       progress.feedforward_error(d.rest.attitude_error_max, d.rest.rate_error_max, 0.0, w) +
                       d.rest.command_error;
   d.torque_needed = std::max(flight, wait);
   d.torque_limit = progress.tau_max();
+  if (basis.slabs.count > 0) {
+    // Wheels: per slab, the reference's torque along the row plus the error's support (exact at
+    // the plan's nodes and midpoints, between which the torque is linear).
+    d.wheel_slabs = true;
+    d.torque_ratio = std::max(basis.slabs.plan_gauge(progress.plan(), rate * rate, flight_error),
+                              basis.slabs.inflated_gauge(lie::Vec3::Zero(), wait));
+  }
   d.params.rate = rate;
   d.params.attitude_error = std::max(m.e_R_max, d.rest.e_R_max);
   d.params.rate_error = std::max(m.rate_error_max, d.rest.rate_error_max);
   d.params.attitude_allowance = in.attitude_noise;
   d.params.rate_allowance = in.rate_error + in.attitude_noise * in.reference_rate_max;
   d.params.torque_bound = d.torque_needed;
+  d.params.torque_ratio = d.torque_ratio;
   d.params.gate_attitude = d.gate_attitude;
   d.params.gate_rate = d.gate_rate;
   return d;

@@ -10,6 +10,7 @@
 #include "attiguard/governor/progress_governor.hpp"
 #include "attiguard/governor/robust_tracking_margin.hpp"
 #include "attiguard/governor/slew_plan.hpp"
+#include "attiguard/governor/torque_slabs.hpp"
 #include "attiguard/sim/pet_erg_scenario.hpp"
 
 namespace attiguard::sim {
@@ -26,10 +27,16 @@ struct PlannedRobustDesign {
   double torque_needed{0.0};        ///< the law's bound over the level set plus the command error [N·m]
   double torque_limit{0.0};         ///< what the command must stay within [N·m]
   double rate{1.0};                 ///< the clock's rate ṡ the plan is flown at
-  /// Both hold: the plan keeps every cone by θ + β and the command stays within its limit.
-  [[nodiscard]] bool holds() const noexcept {
-    return plan_cone_margin >= cone_margin_needed && torque_needed <= torque_limit;
+  /// With wheels: the command's largest gauge against their slabs within τ_max (≤ 1 keeps it);
+  /// 0 without wheels (docs/pet-erg.md, section 16.3, "Wheels")
+  double torque_ratio{0.0};
+  bool wheel_slabs{false};          ///< the torque is judged by torque_ratio (wheels), else by the ball
+  /// The command stays within what the actuators apply unclipped.
+  [[nodiscard]] bool torque_holds() const noexcept {
+    return wheel_slabs ? torque_ratio <= 1.0 : torque_needed <= torque_limit;
   }
+  /// Both hold: the plan keeps every cone by θ + β and the command stays within its limit.
+  [[nodiscard]] bool holds() const noexcept { return plan_cone_margin >= cone_margin_needed && torque_holds(); }
 };
 
 /// max ‖dω̇_p/dt‖ over the plan [rad/s³], ω̇_p = J⁻¹(τ_p − ω_p × Jω_p) (docs/pet-erg.md, section
@@ -48,6 +55,9 @@ struct PlannedRobustBasis {
   governor::RobustTrackingMargin rest;
   double gate_attitude{0.0};
   double gate_rate{0.0};
+  /// The wheels' slabs within the declared τ_max (count 0 without wheels: the ball of the
+  /// progress governor's τ_max judges the torque)
+  governor::TorqueSlabs slabs{};
 };
 
 /// The wait's margin and gate for the gains of `progress` (docs/pet-erg.md, section 16.3,

@@ -13,6 +13,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
+#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/sim/pet_erg_loop.hpp"
 #include "attiguard/sim/pet_erg_slew_problem.hpp"
@@ -148,9 +149,7 @@ std::optional<PlannedRobustDesign> design_at(const PetErgScenario& sc, const gov
 /// The fastest ṡ ∈ [kSlowestRate, 1] whose design keeps the torque (bisection: the need grows
 /// with ṡ), with its design; nothing when even the slowest does not.
 std::optional<PlannedRobustDesign> fastest_rate(const PetErgScenario& sc, const governor::ProgressGovernor& progress) {
-  const auto torque_ok = [](const std::optional<PlannedRobustDesign>& d) {
-    return d && d->torque_needed <= d->torque_limit;
-  };
+  const auto torque_ok = [](const std::optional<PlannedRobustDesign>& d) { return d && d->torque_holds(); };
   PlannedRobustBasis basis;
   try {
     basis = planned_robust_basis(sc, progress);
@@ -301,6 +300,11 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   s.params = governor::PlannedGovernorParams{f.gains, f.tau_max, f.sample_period, f.epsilon,
                                              sc.control_period, sc.imperfections.delay_periods, std::nullopt};
   if (f.robust) s.params.robust = f.robust->params;
+  // With robust margins and wheels the command is saturated to the wheels' slabs, which the
+  // design keeps it within (docs/pet-erg.md, section 16.3, "Wheels").
+  if (f.robust && !sc.wheels.empty()) {
+    s.params.slabs = governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
+  }
   s.run.params.Ts = f.sample_period;  // the continuous loop stops at every choice of ṡ
   set_integration_step(f, sc.params.J, s.run);
   return s;
@@ -324,8 +328,11 @@ std::string robust_report(const PlannedRobustDesign& d, const PlannedFigures& f)
          " deg, rate " + four_digits(std::max(m.rate_error_max, d.rest.rate_error_max)) +
          " rad/s; cone margin needed " + four_digits(d.cone_margin_needed * kDeg) + " deg (with the bias), the plan keeps " +
          four_digits(d.plan_cone_margin * kDeg) + " deg\n";
-  out += "  torque needed " + four_digits(d.torque_needed) + " of " + four_digits(d.torque_limit) +
-         " N m; the clock starts once the measured errors are within " + four_digits(d.gate_attitude) + " rad and " +
+  out += d.wheel_slabs ? "  torque needed " + four_digits(d.torque_ratio) + " of the wheels' limits (per wheel, within " +
+                             four_digits(d.torque_limit) + " N m in every direction: " +
+                             four_digits(d.torque_needed) + " N m)"
+                       : "  torque needed " + four_digits(d.torque_needed) + " of " + four_digits(d.torque_limit) + " N m";
+  out += "; the clock starts once the measured errors are within " + four_digits(d.gate_attitude) + " rad and " +
          four_digits(d.gate_rate) + " rad/s\n";
   return out;
 }
@@ -417,7 +424,9 @@ class PlannedFlight {
     ++f.samples;
     ++r_.samples;
     if (c.admissible) ++r_.samples_updating; else ++f.inadmissible_samples;
-    f.max_torque_bound_ratio = std::max(f.max_torque_bound_ratio, c.torque_bound / gov_.params().tau_max);
+    const governor::PlannedGovernorParams& gp = gov_.params();
+    const double bound_ratio = gp.slabs.count > 0 && gp.robust ? gp.robust->torque_ratio : c.torque_bound / gp.tau_max;
+    f.max_torque_bound_ratio = std::max(f.max_torque_bound_ratio, bound_ratio);
     f.last_V = c.V;
     f.last_gamma_g = c.gamma_g;
     f.last_torque_bound = c.torque_bound;

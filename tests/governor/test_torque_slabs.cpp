@@ -48,6 +48,18 @@ TEST(TorqueSlabs, WithoutSlabsTheGaugeIsTheNormOverTauMax) {
   EXPECT_DOUBLE_EQ(ball.inflated_gauge(tau, 0.01), (tau.norm() + 0.01) / 0.25);
 }
 
+TEST(TorqueSlabs, APyramidGivesFourTimesTheSineOfItsElevationAboutItsAxis) {
+  // Every wheel of a pyramid at elevation e adds u sin e about z: 4 u sin e.
+  for (const double e : {0.3, std::atan(1.0 / std::sqrt(2.0)), 1.1}) {
+    const dynamics::ReactionWheelArray array(dynamics::pyramid_wheels(e, 0.1, 6.0));
+    const TorqueSlabs s = wheel_torque_slabs(array, 100.0);
+    EXPECT_NEAR(s.torque_along(Vec3::UnitZ()), 4.0 * 0.1 * std::sin(e), 1e-14);
+    EXPECT_NEAR(s.torque_along(-3.0 * Vec3::UnitZ()), 4.0 * 0.1 * std::sin(e), 1e-14);
+    // The ball binds when it is smaller.
+    EXPECT_DOUBLE_EQ(wheel_torque_slabs(array, 0.01).torque_along(Vec3::UnitZ()), 0.01);
+  }
+}
+
 TEST(TorqueSlabs, AtGaugeOneTheAllocationReachesAWheelLimitOrTheBall) {
   std::mt19937 rng(7);
   for (const dynamics::ReactionWheelArray& array : arrays()) {

@@ -150,6 +150,9 @@ std::string pet_erg_outcome_line(const json& summary) {
   if (t_conv) {
     std::string t = "at " + fig(*t_conv) + " s";
     if (ratio && t_bb) t += " = " + fig(*ratio) + "x the eigenaxis bang-bang time " + fig(*t_bb) + " s";
+    const auto wheels_ratio = number(summary, "convergence_time_over_wheels_bang_bang");
+    const auto t_wheels = number(summary, "eigenaxis_bang_bang_time_wheels");
+    if (wheels_ratio && t_wheels) t += " (" + fig(*wheels_ratio) + "x the wheels' " + fig(*t_wheels) + " s)";
     line.part(t);
     planned_parts(line, summary);
   } else if (const auto d = number(summary, "duration")) {

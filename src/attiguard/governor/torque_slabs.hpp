@@ -30,6 +30,9 @@ struct TorqueSlabs {
   /// (exact: each term is the support of the ball in the row's direction).
   [[nodiscard]] double inflated_gauge(const lie::Vec3& tau_b, double e) const noexcept;
 
+  /// The largest torque of P along d: 1/gauge(d/‖d‖) [N·m] (d ≠ 0).
+  [[nodiscard]] double torque_along(const lie::Vec3& d_b) const noexcept { return 1.0 / gauge(d_b.normalized()); }
+
   /// The largest inflated gauge of ṡ² τ_p(σ) + δ over the plan and ‖δ‖ ≤ e: the plan's torque is
   /// linear between a node, its midpoint and the next node and the gauge is convex, so its
   /// largest value is at one of those points, exactly (docs/pet-erg.md, section 16.3, "Wheels").

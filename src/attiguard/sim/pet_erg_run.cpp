@@ -413,6 +413,11 @@ void add_outcome(nlohmann::json& j, const PetErgScenario& sc, const PetErgResult
       r.convergence_time >= 0.0 && r.eigenaxis_bang_bang_time > 0.0
           ? nlohmann::json(r.convergence_time / r.eigenaxis_bang_bang_time)
           : nlohmann::json(nullptr);
+  const bool wheels = r.wheel_bang_bang_time > 0.0;
+  j["eigenaxis_bang_bang_time_wheels"] = wheels ? nlohmann::json(r.wheel_bang_bang_time) : nlohmann::json(nullptr);
+  j["convergence_time_over_wheels_bang_bang"] = wheels && r.convergence_time >= 0.0
+                                                    ? nlohmann::json(r.convergence_time / r.wheel_bang_bang_time)
+                                                    : nlohmann::json(nullptr);
 }
 
 /// The sampling of [PET-ERG eq. (5)] and the integrator's counters.

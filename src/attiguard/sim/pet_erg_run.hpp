@@ -57,6 +57,9 @@ struct PetErgResult {
   std::vector<int> active_cones;        ///< cones with c(R_g) < ζ at the end (repulsive band)
   double slew_angle{0.0};               ///< d(R_0, final R_d) [rad]
   double eigenaxis_bang_bang_time{0.0};  ///< of that slew at τ_max (dynamics/eigenaxis_slew.hpp)
+  /// With wheels: the same at the torque they apply unclipped along J k within τ_max (the
+  /// craft's own bang-bang time; governor/torque_slabs.hpp); 0 without wheels
+  double wheel_bang_bang_time{0.0};
   /// Wheels (docs/pet-erg.md, section 12): max over the control instants of |(A⁺τ_cmd)_i| /
   /// u_max,i (> 1: the allocation demanded more than a wheel gives, the command was clipped) …
   double max_wheel_torque_ratio{0.0};

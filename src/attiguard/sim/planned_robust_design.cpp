@@ -63,8 +63,9 @@ governor::RobustTrackingInputs tracking_inputs(const PetErgScenario& sc, const g
   in.reference_accel_max = w.omega_dot_max;
   in.reference_jerk_max = plan_feedforward_rate(plan, w.omega_max);
   in.reference_end_accel = plan.evaluate(plan.duration()).omega_dot_b.norm();
-  // The start: on the plan's first attitude, at rest but for ω₀, seen through the bias.
-  in.initial_attitude_error = in.attitude_bias;
+  // The start: the plan's first attitude is the one the sensor reports at t = 0 without its
+  // noise, R_0 B: in the frame R B the error is the noise's; at rest but for ω₀.
+  in.initial_attitude_error = in.attitude_noise;
   in.initial_rate_error = sc.omega0_b.norm();
   return in;
 }

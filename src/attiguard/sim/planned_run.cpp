@@ -254,6 +254,12 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   PlannedSetup s;
   s.run = sc;
   s.problem = slew_problem(sc, SlewStart::any_rate);
+  // With robust margins the plan starts where the flight software sees the craft: the attitude
+  // its sensor reports at t = 0, R_0 exp(b) (the bias included; its noise is the design's initial
+  // error). The analysis runs in that frame, R B (docs/pet-erg.md, section 16.3, "The wait").
+  if (sc.margins == governor::Margins::robust) {
+    s.problem.R_start = sc.R0_ib * lie::exp(sc.imperfections.sensor.attitude_bias_b);
+  }
   PlannedFigures& f = s.figures;
   f.plan_torque_limit = s.problem.tau_max;
   governor::CraftScales craft = craft_scales(sc);

@@ -172,6 +172,12 @@ governor::GovernorDesignInputs design_inputs(const GovernorParams& p, const std:
   }
   in.bounds.delay_periods = b.delay_periods;
   in.max_reference_step = scenario::checked_number(a.robust_reference_step, "robust_reference_step", false, kLabel);
+  // As the scenario reader's [control] robust_reference_step: it caps the reference lag of a
+  // delayed command only (docs/pet-erg.md, section 13), so it is refused without the delay.
+  if (in.max_reference_step > 0.0 && b.delay_periods == 0) {
+    throw InputError(std::string(kLabel) + ": robust_reference_step: only used with delay_periods = 1 (it caps the "
+                     "reference lag of a delayed command; without the delay there is none)");
+  }
   return in;
 }
 

@@ -134,3 +134,11 @@ def test_plain_values_are_checked_and_the_design_refusals_named():
     nominal = plain_governor(margins="nominal")
     assert nominal.robust is None and nominal.design["tau_max_reduced"] == 0.0
     assert nominal.design["tau_max"] == 1.0 and nominal.design["wheel_binding"] in range(4)
+
+
+def test_a_reference_step_without_the_delay_is_refused_as_in_a_scenario():
+    # Issue 49: robust_reference_step caps the lag of a delayed command only; the scenario reader
+    # refuses it at its key with delay_periods = 0, and so does Governor(...).
+    with pytest.raises(ag.InputError, match=r"robust_reference_step: only used with delay_periods = 1"):
+        plain_governor(delay_periods=0)
+    plain_governor(delay_periods=0, robust_reference_step=0.0)  # without the cap: accepted

@@ -81,7 +81,9 @@ TEST(PetErgAnyCraft, IssueCraftsConvergeWithDefaultsWithinTenTimesBangBang) {
 
 TEST(PetErgAnyCraft, SymmetricSunConvergesWithDefaultsAndTheTieBreakInBothLoops) {
   const std::filesystem::path dir = std::filesystem::path(ATTIGUARD_SOURCE_DIR) / "tests/data/defaults";
-  for (const char* name : {"symmetric_sun.toml", "symmetric_sun_robust.toml"}) {
+  // cubesat_symmetric_5hz.toml: a slow loop deriving ε > 1 (it stalled while ε was the
+  // tie-break's floor on ‖ρ_a‖ ≤ 1).
+  for (const char* name : {"symmetric_sun.toml", "symmetric_sun_robust.toml", "cubesat_symmetric_5hz.toml"}) {
     const PetErgScenario sc = scenario::parse_pet_erg(scenario::load_document(dir / name));
     EXPECT_TRUE(sc.derived.kp_derived && sc.derived.kappa_derived) << name;
     const PetErgResult r = simulate_pet_erg(sc);

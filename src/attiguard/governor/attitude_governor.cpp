@@ -169,7 +169,7 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
 TieBreakUpdate AttitudeGovernor::tie_break_update(const TieBreak& held, const Mat3& R_g,
                                                   const Mat3& R_d) const noexcept {
   if (params_.mode == GovernorMode::none || !params_.saddle_tie_break) return TieBreakUpdate{};
-  return update_tie_break(held, cones_.span(), R_g, R_d, params_.epsilon);
+  return update_tie_break(held, cones_.span(), R_g, R_d, std::min(params_.epsilon, kTieBreakFloorCap));
 }
 
 void AttitudeGovernor::reset(double t0, const Mat3& R_g0) noexcept {

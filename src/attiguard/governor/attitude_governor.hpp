@@ -138,7 +138,7 @@ class AttitudeGovernor {
   [[nodiscard]] GovernorOutput evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                         const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
   /// The saddle tie-break at a sampling instant for R_g and R_d (update_tie_break with the floor
-  /// ε on ‖ρ_a‖; docs/pet-erg.md, section 4, "Saddles: the tie-break"); the state of the flight
+  /// min(ε, kTieBreakFloorCap) on ‖ρ_a‖; docs/pet-erg.md, section 4, "Saddles: the tie-break"); the state of the flight
   /// loop is not changed.
   [[nodiscard]] TieBreakUpdate tie_break_update(const TieBreak& held, const Mat3& R_g,
                                                 const Mat3& R_d) const noexcept;

@@ -29,6 +29,10 @@ inline constexpr double kTieBreakDetourGain = 0.5;
 inline constexpr double kTieBreakClearTangent = 1e-3;
 /// The side: P is compared at R_g exp(±kTieBreakProbe ĥ) [rad].
 inline constexpr double kTieBreakProbe = 0.05;
+/// The largest floor on ‖ρ_a‖ = sin d(R_g, R_d) below which no detour starts (R_g at R_d): the
+/// governor passes its ε, which a slow flight loop derives above 1 (docs/pet-erg.md, section 8),
+/// where ‖ρ_a‖ ≤ 1 could never exceed it; capped here (sin 2.9°).
+inline constexpr double kTieBreakFloorCap = 0.05;
 
 /// The tie-break state held on [t_k, t_{k+1}) (docs/pet-erg.md, section 4, "Saddles: the
 /// tie-break"): whether a detour is active, around which cone (index into the governor's cones)

@@ -5,8 +5,6 @@
 #include <limits>
 
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
-#include "attiguard/dynamics/reaction_wheel_array.hpp"
-#include "attiguard/governor/torque_slabs.hpp"
 #include "attiguard/sim/time_grid.hpp"
 
 namespace attiguard::sim::pet_erg_loop {
@@ -87,9 +85,7 @@ void finish_outcome(const PetErgScenario& sc, const Mat3& R_g_end, const Mat3& R
   const lie::Vec3 rotation_b = lie::log(sc.R0_ib.transpose() * R_d_end);
   if (!sc.wheels.empty() && rotation_b.norm() > 0.0) {
     // The wheels' own: the torque they apply unclipped along J k, within τ_max.
-    const governor::TorqueSlabs slabs =
-        governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
-    const double tau = slabs.torque_along(sc.params.J * rotation_b.normalized());
+    const double tau = wheel_slabs(sc).torque_along(sc.params.J * rotation_b.normalized());
     r.wheel_bang_bang_time = dynamics::eigenaxis_bang_bang_time(sc.params.J, sc.R0_ib, R_d_end, tau);
   }
   OutcomeEvidence e;

@@ -65,6 +65,11 @@ double wheel_torque_radius(const PetErgScenario& sc) {
 
 }  // namespace
 
+governor::TorqueSlabs wheel_slabs(const PetErgScenario& sc) {
+  if (sc.wheels.empty()) return governor::TorqueSlabs{sc.params.tau_max};
+  return governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
+}
+
 governor::CraftScales craft_scales(const PetErgScenario& sc) {
   governor::CraftScales craft;
   craft.J = sc.params.J;

@@ -16,6 +16,7 @@
 #include "attiguard/governor/default_gains.hpp"
 #include "attiguard/governor/governor_design.hpp"
 #include "attiguard/governor/reference_schedule.hpp"
+#include "attiguard/governor/torque_slabs.hpp"
 #include "attiguard/integrate/integrator_settings.hpp"
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/sim/adversarial_disturbance.hpp"
@@ -105,6 +106,11 @@ struct PetErgScenario {
 /// the wheel polytope's inscribed torque radius, the disturbance bound, the largest slew (R_0
 /// through the schedule), the initial kinetic energy and the control period.
 [[nodiscard]] governor::CraftScales craft_scales(const PetErgScenario& sc);
+
+/// The torques the scenario's wheels apply unclipped within its τ_max (docs/pet-erg.md, section
+/// 16.3, "Wheels"); count 0 without wheels. Set-up code (throws SetupError for an array the
+/// reader would refuse).
+[[nodiscard]] governor::TorqueSlabs wheel_slabs(const PetErgScenario& sc);
 
 /// The values `sc` runs with and the craft's scales they relate to (docs/pet-erg.md, section 8):
 /// governor::derive_governor_values with every value of sc.params given; which of them the reader

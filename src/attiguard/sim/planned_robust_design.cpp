@@ -109,7 +109,7 @@ PlannedRobustBasis planned_robust_basis(const PetErgScenario& sc, const governor
                                 lead * (b.rest.feedback_torque_max + b.rest.torque_error) / J_min;
   b.flight.torque_from_start = true;
   // With wheels the command is judged against what they apply unclipped (section 16.3, "Wheels").
-  if (!sc.wheels.empty()) b.slabs = governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
+  b.slabs = wheel_slabs(sc);
   return b;
 }
 

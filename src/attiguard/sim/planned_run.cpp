@@ -13,7 +13,6 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/core/four_digits.hpp"
 #include "attiguard/dynamics/eigenaxis_slew.hpp"
-#include "attiguard/dynamics/reaction_wheel_array.hpp"
 #include "attiguard/dynamics/rigid_body.hpp"
 #include "attiguard/sim/pet_erg_loop.hpp"
 #include "attiguard/sim/pet_erg_slew_problem.hpp"
@@ -309,7 +308,7 @@ PlannedSetup planned_setup(const PetErgScenario& sc) {
   // With robust margins and wheels the command is saturated to the wheels' slabs, which the
   // design keeps it within (docs/pet-erg.md, section 16.3, "Wheels").
   if (f.robust && !sc.wheels.empty()) {
-    s.params.slabs = governor::wheel_torque_slabs(dynamics::ReactionWheelArray(sc.wheels), sc.params.tau_max);
+    s.params.slabs = wheel_slabs(sc);
   }
   s.run.params.Ts = f.sample_period;  // the continuous loop stops at every choice of ṡ
   set_integration_step(f, sc.params.J, s.run);

@@ -223,8 +223,9 @@ void plan_robust(const PetErgScenario& sc, const plan::PlannerOptions& options, 
     if (!best) {
       throw PlannedSetupRefusal("control", "margins", "robust margins of the planned mode: the imperfections' "
                                 "bounds leave no clock rate down to " + four_digits(kSlowestRate) +
-                                " whose proved errors keep the torque within " + four_digits(f.tau_max) +
-                                " N m, at any of the tried gains (docs/pet-erg.md, section 16.3); at the "
+                                " whose proved errors keep the torque within " +
+                                (sc.wheels.empty() ? four_digits(f.tau_max) + " N m" : std::string("the wheels' limits")) +
+                                ", at any of the tried gains (docs/pet-erg.md, section 16.3); at the "
                                 "derived gains: " + slowest_design_summary(sc, s.planned.plan, f));
     }
     f.robust = best;
@@ -333,9 +334,8 @@ std::string robust_report(const PlannedRobustDesign& d, const PlannedFigures& f)
          " deg, rate " + four_digits(std::max(m.rate_error_max, d.rest.rate_error_max)) +
          " rad/s; cone margin needed " + four_digits(d.cone_margin_needed * kDeg) + " deg (with the bias), the plan keeps " +
          four_digits(d.plan_cone_margin * kDeg) + " deg\n";
-  out += d.wheel_slabs ? "  torque needed " + four_digits(d.torque_ratio) + " of the wheels' limits (per wheel, within " +
-                             four_digits(d.torque_limit) + " N m in every direction: " +
-                             four_digits(d.torque_needed) + " N m)"
+  out += d.wheel_slabs ? "  torque needed " + four_digits(d.torque_ratio) + " of the wheels' limits (the largest over the "
+                             "wheels and tau_max; as a norm " + four_digits(d.torque_needed) + " N m)"
                        : "  torque needed " + four_digits(d.torque_needed) + " of " + four_digits(d.torque_limit) + " N m";
   out += "; the clock starts once the measured errors are within " + four_digits(d.gate_attitude) + " rad and " +
          four_digits(d.gate_rate) + " rad/s\n";

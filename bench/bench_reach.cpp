@@ -6,6 +6,7 @@
 
 #include "attiguard/reach/conreach.hpp"
 #include "attiguard/reach/contraction_sdp.hpp"
+#include "attiguard/reach/dense_sdp.hpp"
 #include "attiguard/reach/soundness.hpp"
 
 namespace ar = attiguard::reach;
@@ -46,6 +47,28 @@ static void BM_ContractionSdpStep0(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ContractionSdpStep0)->Unit(benchmark::kMicrosecond);
+
+// The step-0 metric of BM_ContractionSdpStep0 (the same problem, the same certification) with
+// solve_sdp's dense solver (/1, issue 48; docs/reach.md, "Dense SDP solver") and with CSDP alone
+// (/0), side by side.
+static void BM_DenseSdpPaperStep0(benchmark::State& state) {
+  const bool dense = state.range(0) != 0;
+  const bool was = ar::dense_sdp_enabled();
+  ar::set_dense_sdp_enabled(dense);
+  const ar::Box3 U0{ar::Vec3(0.442, 0.398, 0.361), ar::Vec3(0.750, 0.640, 0.710)};
+  const ar::LmiEnclosure enc = paper_loop().lmi_enclosure({}, U0);
+  const ar::DenseSdpCounts before = ar::dense_sdp_counts();
+  for (auto _ : state) {
+    const ar::MetricSolution sol = ar::solve_metric(enc, ar::Mat3::Identity(), ar::Mat3::Identity(),
+                                                    0.1871, ar::MetricObjective::max_trace_q, {});
+    benchmark::DoNotOptimize(sol.Q);
+  }
+  const ar::DenseSdpCounts after = ar::dense_sdp_counts();
+  ar::set_dense_sdp_enabled(was);
+  state.SetLabel(dense ? "dense" : "CSDP");
+  state.counters["fallbacks"] = static_cast<double>(after.fallback - before.fallback);
+}
+BENCHMARK(BM_DenseSdpPaperStep0)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
 static void BM_SoundnessPaper10k(benchmark::State& state) {
   const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});

@@ -12,6 +12,8 @@
 #include "attiguard/reach/sdp_solver.hpp"
 
 #include <Eigen/Eigenvalues>
+
+#include "attiguard/reach/dense_sdp.hpp"
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -415,6 +417,16 @@ void read_solution(const LmiProblem& problem, const CsdpData& data, int code, do
 SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, double recheck_tol) {
   validate(problem);
   ++g_solve_count;
+  // Issue 48 (docs/reach.md, "Dense SDP solver"): the dense HKM solver of dense_sdp.hpp first,
+  // outside CSDP's lock; CSDP, the reference, when it does not solve and re-check.
+  if (dense_sdp_enabled()) {
+    SdpResult dense = solve_sdp_dense(problem, {}, recheck_tol);
+    const bool accepted = dense.status == SdpStatus::solved;
+    record_dense_sdp_outcome(accepted);
+    if (accepted) {
+      return dense;
+    }
+  }
   SdpResult result;
   CsdpData data;
   const int n = fill_constant_blocks(problem, data);

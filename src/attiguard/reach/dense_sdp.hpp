@@ -1,0 +1,135 @@
+#pragma once
+/// @file dense_sdp.hpp
+/// A dense primal-dual interior-point solver for ConReach's small SDPs (issue 48; docs/reach.md,
+/// "Dense SDP solver"): 12–30 variables, a few 3×3–9×9 blocks. solve_sdp() (sdp_solver.hpp)
+/// tries it first when set_dense_sdp_enabled(true) and falls back to CSDP, which stays the
+/// reference and decides infeasibility.
+///
+/// Sign conventions (those of sdp_solver.hpp, CSDP's dual form with A_i = F_i, C = −F0, a = b):
+///
+///   dual   (y, S):  minimise bᵀy      s.t.  S = F0 + Σ_i y_i F_i ⪰ 0
+///   primal (X):     maximise −⟨F0, X⟩  s.t.  ⟨F_i, X⟩ = b_i,  X ⪰ 0
+///
+/// with X and S block-diagonal (one dense matrix per LmiBlock) and ⟨·,·⟩ the trace inner product
+/// summed over the blocks; bᵀy + ⟨F0, X⟩ = ⟨X, S⟩ ≥ 0 on feasible pairs.
+///
+/// Method: infeasible-start path following with the HKM search direction (Helmberg, Rendl,
+/// Vanderbei and Wolkowicz 1996; Kojima, Shindoh and Hara 1997; Monteiro 1997) and Mehrotra's
+/// predictor–corrector, step lengths to the boundary by eigenvalues and the adaptive centring
+/// exponent of SDPT3 (Todd, Toh and Tütüncü 1998; Toh, Todd and Tütüncü 1999). The m×m Schur
+/// complement M_ij = ⟨F_i, X F_j S⁻¹⟩ is formed densely (sparse F_i entry by entry) and factored
+/// by Eigen's LLT. Every matrix of the iteration lives in the solver object: the loop allocates
+/// nothing.
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <vector>
+
+#include "attiguard/reach/sdp_solver.hpp"
+
+namespace attiguard::reach {
+
+/// Stopping rules of the dense solver (issue 48; docs/reach.md, "Dense SDP solver").
+struct DenseSdpSettings {
+  double tolerance{1e-9};        ///< relative gap, primal and dual infeasibility: solved
+  double loose_tolerance{1e-8};  ///< accepted when the iteration stalls (CSDP's objtol)
+  int max_iterations{60};
+  double divergence{1e12};  ///< max |X|, |y| beyond this: failed (likely infeasible; CSDP decides)
+};
+
+/// What the last solve did.
+struct DenseSdpInfo {
+  int iterations{0};
+  double relative_gap{0.0};           ///< max(⟨X,S⟩, |bᵀy + ⟨F0,X⟩|) / (1 + |bᵀy| + |⟨F0,X⟩|)
+  double primal_infeasibility{0.0};   ///< ‖b − A(X)‖ / (1 + ‖b‖)
+  double dual_infeasibility{0.0};     ///< ‖F0 + A*(y) − S‖_F / (1 + ‖F0‖_F)
+  /// tr X at the end: bᵀy' ≥ p* − ε tr X* for any y' with λ_min(F0 + A*(y')) ≥ −ε, so a solution
+  /// infeasible by ε (CSDP's, about 1e-8) may lie that far below the optimum.
+  double primal_trace{0.0};
+};
+
+/// The HKM / Mehrotra solver of dense_sdp.hpp for one LmiProblem; reusable (solve() restarts from
+/// the default infeasible start every time). The problem must outlive the solver and pass
+/// solve_sdp's validation (finite, symmetric, every variable used). Linearly dependent F_i are
+/// not solved (status failed: CSDP's business).
+class DenseSdpSolver {
+ public:
+  /// Copies the problem's blocks and allocates all the workspace (issue 48, docs/reach.md).
+  explicit DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings& settings = {});
+
+  /// Runs the HKM predictor–corrector iteration of dense_sdp.hpp (Helmberg–Rendl–Vanderbei–
+  /// Wolkowicz 1996 direction, Mehrotra centring); status solved when the stopping rules hold
+  /// and y re-checks by eigenvalues (LmiProblem::min_eigenvalue ≥ −recheck_tol), as solve_sdp.
+  /// Never reports infeasible: a problem it cannot solve is `failed` (CSDP decides).
+  [[nodiscard]] SdpResult solve(double recheck_tol = 1e-9);
+
+  /// Iterations and final residuals of the last solve() (docs/reach.md, "Dense SDP solver").
+  [[nodiscard]] const DenseSdpInfo& info() const noexcept { return info_; }
+
+ private:
+  struct Term {
+    int var{0};
+    Eigen::MatrixXd F;                 ///< symmetrised F_i of the block
+    std::vector<int> rows, cols;       ///< non-zero entries (both triangles) when sparse
+    std::vector<double> values;
+    bool sparse{false};
+  };
+  struct Block {
+    int size{0};
+    Eigen::MatrixXd F0;
+    std::vector<Term> terms;
+    Eigen::MatrixXd X, S, Sinv, Rd, dX, dS, dXa, dSa, G, R, T, U, I;
+    Eigen::LLT<Eigen::MatrixXd> chol;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
+  };
+
+  bool constraints_independent();
+  void initial_point();
+  bool factor_and_residuals();
+  [[nodiscard]] bool converged(double tol) const noexcept;
+  bool form_schur();
+  void schur_block(Block& k);
+  void direction(double target, bool corrector);
+  double max_step(bool primal);
+  double block_step(Block& k, const Eigen::MatrixXd& V, const Eigen::MatrixXd& D);
+  double affine_mu(double ap, double ad) const;
+  void update(double ap, double ad);
+  SdpResult finish(bool ok, double recheck_tol) const;
+
+  const LmiProblem* problem_;
+  DenseSdpSettings settings_;
+  DenseSdpInfo info_;
+  std::vector<Block> blocks_;
+  int n_{0};  ///< Σ block sizes
+  Eigen::VectorXd b_, y_, dy_, h_, rp_;
+  Eigen::MatrixXd M_;
+  Eigen::LLT<Eigen::MatrixXd> schur_;
+  double norm_b_{0.0}, norm_f0_{0.0}, scale_{1.0};
+  bool independent_{true};
+};
+
+/// One dense solve (DenseSdpSolver of dense_sdp.hpp; issue 48, docs/reach.md "Dense SDP solver").
+[[nodiscard]] SdpResult solve_sdp_dense(const LmiProblem& problem,
+                                        const DenseSdpSettings& settings = {},
+                                        double recheck_tol = 1e-9);
+
+/// Whether solve_sdp tries the dense solver before CSDP (process-wide, atomic). Default off: CSDP
+/// alone, as before issue 48, until ConReach's example figures are recaptured with it on
+/// (docs/reach.md, "Dense SDP solver").
+void set_dense_sdp_enabled(bool enabled) noexcept;
+/// See set_dense_sdp_enabled (issue 48, docs/reach.md "Dense SDP solver").
+[[nodiscard]] bool dense_sdp_enabled() noexcept;
+
+/// solve_sdp's outcomes since the start of the process (issue 48, docs/reach.md): solves
+/// accepted from the dense solver, and solves that fell back to CSDP.
+struct DenseSdpCounts {
+  long dense{0};
+  long fallback{0};
+};
+/// The counts of solve_sdp's dense and CSDP solves (issue 48, docs/reach.md "Dense SDP solver").
+[[nodiscard]] DenseSdpCounts dense_sdp_counts() noexcept;
+/// Called by solve_sdp once per solve with the dense path enabled (issue 48, docs/reach.md).
+void record_dense_sdp_outcome(bool accepted) noexcept;
+
+}  // namespace attiguard::reach

@@ -93,4 +93,43 @@ template <int K, int N>
   return out;
 }
 
+/// One RKMK stage's chart at Ω: the point y ⊕ Ω and the rotation blocks' J_r⁻¹(Ω_j) of
+/// dexpinv_body, from one sin and one cos per factor (exp and J_r⁻¹ share θ = ‖Ω_j‖). Bit-for-bit
+/// retract(y, Ω) and dexpinv_body(Ω, ·) (Munthe-Kaas 1998, BIT 38; docs/performance.md, "Lean core").
+template <int K, int N>
+struct StageChart {
+  ProductState<K, N> point;            ///< y ⊕ Ω
+  std::array<lie::Mat3, K> jr_inverse;  ///< J_r⁻¹(Ω_j)
+
+  /// dexpinv_body(Ω, ξ): J_r⁻¹(Ω_j) ξ_j on the rotation blocks, ξ_x on the Euclidean one.
+  [[nodiscard]] typename ProductState<K, N>::Tangent dexpinv(
+      const typename ProductState<K, N>::Tangent& xi) const noexcept {
+    using S = ProductState<K, N>;
+    typename S::Tangent out;
+    for (int j = 0; j < K; ++j) {
+      S::rot_block(out, j) = jr_inverse[static_cast<std::size_t>(j)] * S::rot_block(xi, j);
+    }
+    S::euclidean_block(out) = S::euclidean_block(xi);
+    return out;
+  }
+};
+
+/// The chart of an RKMK stage at Ω from y (StageChart; Munthe-Kaas 1998, BIT 38).
+template <int K, int N>
+[[nodiscard]] StageChart<K, N> stage_chart(const ProductState<K, N>& y,
+                                           const typename ProductState<K, N>::Tangent& Omega) noexcept {
+  using S = ProductState<K, N>;
+  StageChart<K, N> chart;
+  for (int j = 0; j < K; ++j) {
+    const auto Omega_j = S::rot_block(Omega, j);
+    const lie::Vec3 w = Omega_j;
+    const lie::ExpCoefficients k = lie::exp_coefficients(w);
+    const auto jj = static_cast<std::size_t>(j);
+    chart.point.R[jj] = y.R[jj] * lie::rodrigues(w, k.a, k.b);
+    chart.jr_inverse[jj] = lie::right_jacobian_inverse_of(w, k.c);
+  }
+  chart.point.x = y.x + S::euclidean_block(Omega);
+  return chart;
+}
+
 }  // namespace attiguard::integrate

@@ -44,20 +44,24 @@ template <class State, int S, class F>
         Omega += (h * tab.a[i][j]) * k[j];
       }
     }
-    last_raw = f(t0 + tab.c[i] * h, retract<K, N>(y0, Omega));
-    k[i] = dexpinv_body<K, N>(Omega, last_raw);
+    // exp(Ω_j) for the stage's point and J_r⁻¹(Ω_j) for dexpinv share sin θ and cos θ.
+    const StageChart<K, N> chart = stage_chart<K, N>(y0, Omega);
+    last_raw = f(t0 + tab.c[i] * h, chart.point);
+    k[i] = chart.dexpinv(last_raw);
+  }
+  bool has_embedded = false;
+  for (double bh : tab.b_hat) {
+    has_embedded = has_embedded || bh != 0.0;
   }
   Tangent Omega1 = Tangent::Zero();
   Tangent err = Tangent::Zero();
   for (int i = 0; i < S; ++i) {
     Omega1 += (h * tab.b[i]) * k[i];
-    err += (h * (tab.b[i] - tab.b_hat[i])) * k[i];
+    if (has_embedded) {
+      err += (h * (tab.b[i] - tab.b_hat[i])) * k[i];
+    }
   }
   RkmkStepResult<State> out{retract<K, N>(y0, Omega1), Tangent::Zero(), last_raw, false};
-  bool has_embedded = false;
-  for (double bh : tab.b_hat) {
-    has_embedded = has_embedded || bh != 0.0;
-  }
   if (has_embedded) {
     out.error = err;
   }

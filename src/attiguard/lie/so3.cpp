@@ -6,34 +6,6 @@
 
 namespace attiguard::lie {
 
-Mat3 hat(const Vec3& x) noexcept {
-  Mat3 X;
-  X << 0.0, -x.z(), x.y(),  //
-      x.z(), 0.0, -x.x(),   //
-      -x.y(), x.x(), 0.0;
-  return X;
-}
-
-Vec3 vee(const Mat3& X) noexcept { return Vec3(X(2, 1), X(0, 2), X(1, 0)); }
-
-Mat3 sk(const Mat3& A) noexcept { return 0.5 * (A - A.transpose()); }
-
-Mat3 exp(const Vec3& w) noexcept {
-  const double theta2 = w.squaredNorm();
-  const double theta = std::sqrt(theta2);
-  double a;  // sin θ / θ
-  double b;  // (1 − cos θ) / θ²
-  if (theta < 1e-4) {
-    a = 1.0 - theta2 / 6.0 + theta2 * theta2 / 120.0;
-    b = 0.5 - theta2 / 24.0 + theta2 * theta2 / 720.0;
-  } else {
-    a = std::sin(theta) / theta;
-    b = (1.0 - std::cos(theta)) / theta2;
-  }
-  const Mat3 W = hat(w);
-  return Mat3::Identity() + a * W + b * (W * W);
-}
-
 Vec3 log(const Mat3& R) noexcept {
   const Vec3 s2 = vee(R - R.transpose());  // 2 sin θ k
   const double sin_theta = 0.5 * s2.norm();
@@ -63,8 +35,6 @@ Vec3 log(const Mat3& R) noexcept {
 double distance(const Mat3& R1, const Mat3& R2) noexcept {
   return log(R1.transpose() * R2).norm();
 }
-
-double phi(const Mat3& R) noexcept { return 0.5 * (3.0 - R.trace()); }
 
 Mat3 project_to_so3(const Mat3& M) noexcept {
   Eigen::JacobiSVD<Mat3> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
+#include <cmath>
 
 namespace attiguard::lie {
 
@@ -15,18 +16,77 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
 /// Hat map R³ → so(3) with hat(x) y = x × y (PET-ERG paper, Notation; Waypoint paper S(·)).
-[[nodiscard]] Mat3 hat(const Vec3& x) noexcept;
+[[nodiscard]] inline Mat3 hat(const Vec3& x) noexcept {
+  Mat3 X;
+  X << 0.0, -x.z(), x.y(),  //
+      x.z(), 0.0, -x.x(),   //
+      -x.y(), x.x(), 0.0;
+  return X;
+}
 
 /// Vee map so(3) → R³, inverse of hat. Reads the three independent entries of a skew matrix
 /// (the input is not checked to be skew; use vee(sk(A)) for a general matrix).
-[[nodiscard]] Vec3 vee(const Mat3& X) noexcept;
+[[nodiscard]] inline Vec3 vee(const Mat3& X) noexcept { return Vec3(X(2, 1), X(0, 2), X(1, 0)); }
 
 /// Skew-symmetric part sk(A) = (A − Aᵀ)/2 (PET-ERG paper, Notation).
-[[nodiscard]] Mat3 sk(const Mat3& A) noexcept;
+[[nodiscard]] inline Mat3 sk(const Mat3& A) noexcept { return 0.5 * (A - A.transpose()); }
+
+/// The coefficients of Rodrigues' formula [ConReach Sec. 2] at θ = ‖w‖, a = sin θ/θ and
+/// b = (1 − cos θ)/θ², and of the inverse right Jacobian c = 1/θ² − (1 + cos θ)/(2θ sin θ)
+/// (lie/jacobians.hpp), from one sin θ and one cos θ; Taylor series of all three for θ < 1e-4.
+struct ExpCoefficients {
+  double a;  ///< sin θ/θ
+  double b;  ///< (1 − cos θ)/θ²
+  double c;  ///< 1/θ² − (1 + cos θ)/(2θ sin θ) (valid for θ < 2π, θ ≠ π)
+};
+
+/// exp's and J_r⁻¹'s coefficients at w [ConReach Sec. 2] (docs/performance.md, "Lean core").
+/// The same operations as exp and right_jacobian_inverse apply separately, so the results are
+/// bit-for-bit theirs; the RKMK stage (integrate/rkmk_step.hpp) calls sin and cos once for both.
+[[nodiscard]] inline ExpCoefficients exp_coefficients(const Vec3& w) noexcept {
+  const double theta2 = w.squaredNorm();
+  const double theta = std::sqrt(theta2);
+  if (theta < 1e-4) {
+    return {1.0 - theta2 / 6.0 + theta2 * theta2 / 120.0,  //
+            0.5 - theta2 / 24.0 + theta2 * theta2 / 720.0,
+            1.0 / 12.0 + theta2 / 720.0 + theta2 * theta2 / 30240.0};
+  }
+  const double s = std::sin(theta);
+  const double co = std::cos(theta);
+  return {s / theta, (1.0 - co) / theta2, 1.0 / theta2 - (1.0 + co) / (2.0 * theta * s)};
+}
+
+/// Rodrigues' formula exp(ŵ) = I + a ŵ + b ŵ² [ConReach Sec. 2] with the coefficients of
+/// exp_coefficients, written out entry by entry: the operations Eigen performs for
+/// I + a·hat(w) + b·(hat(w)·hat(w)) (which it evaluates as (b·hat(w))·hat(w)) without the
+/// products by hat(w)'s zeros, so the result is bit-for-bit that expression's
+/// (docs/performance.md, "Lean core").
+[[nodiscard]] inline Mat3 rodrigues(const Vec3& w, double a, double b) noexcept {
+  const double x = w.x();
+  const double y = w.y();
+  const double z = w.z();
+  const double bx = b * x;
+  const double by = b * y;
+  const double bz = b * z;
+  Mat3 E;
+  E(0, 0) = 1.0 + (-(bz * z) - by * y);
+  E(1, 1) = 1.0 + (-(bz * z) - bx * x);
+  E(2, 2) = 1.0 + (-(by * y) - bx * x);
+  E(0, 1) = -(a * z) + by * x;
+  E(1, 0) = a * z + bx * y;
+  E(0, 2) = a * y + bz * x;
+  E(2, 0) = -(a * y) + bx * z;
+  E(1, 2) = -(a * x) + bz * y;
+  E(2, 1) = a * x + by * z;
+  return E;
+}
 
 /// Exponential map so(3) → SO(3), Rodrigues' formula exp(ŵ) = I + (sin θ/θ) ŵ + ((1−cos θ)/θ²) ŵ²
 /// with θ = ‖w‖, and Taylor series of both coefficients for θ < 1e-4 [ConReach Sec. 2].
-[[nodiscard]] Mat3 exp(const Vec3& w) noexcept;
+[[nodiscard]] inline Mat3 exp(const Vec3& w) noexcept {
+  const ExpCoefficients k = exp_coefficients(w);
+  return rodrigues(w, k.a, k.b);
+}
 
 /// Principal logarithm SO(3) → R³ (rotation vector, ‖w‖ ∈ [0, π]): exp(log(R)) = R.
 /// θ = atan2(‖vee(R − Rᵀ)‖/2, (tr R − 1)/2); for small θ the series of θ/sin θ, for θ > π/2 the
@@ -38,7 +98,7 @@ using Mat3 = Eigen::Matrix3d;
 [[nodiscard]] double distance(const Mat3& R1, const Mat3& R2) noexcept;
 
 /// Attitude error function φ(R) = ½ tr(I − R) = 1 − cos θ ∈ [0, 2] [PET-ERG Sec. III-A].
-[[nodiscard]] double phi(const Mat3& R) noexcept;
+[[nodiscard]] inline double phi(const Mat3& R) noexcept { return 0.5 * (3.0 - R.trace()); }
 
 /// Closest rotation to a near-rotation M in the Frobenius norm (polar factor via SVD, with the
 /// determinant sign fixed). For input cleaning only: integrators never call this.

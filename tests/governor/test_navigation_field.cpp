@@ -112,5 +112,50 @@ TEST(NavigationField, TotalFieldIsMinusTheGradientOfTheTotalPotential) {
   EXPECT_GE(tested, 100);
 }
 
+// docs/pet-erg.md, section 4, "Half-turns": at θ = d(R_g, R_d) = π the attraction sk(R_gᵀR_d)^∨
+// vanishes (P_a's maximum), so the field the governor follows keeps a floor there.
+TEST(NavigationField, TheGovernedAttractionLeavesAnExactHalfTurn) {
+  const double floor = 0.05;
+  for (const Vec3& axis : {Vec3(0.0, 0.0, 1.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0)}) {
+    Mat3 R_d = -Mat3::Identity();
+    R_d += 2.0 * axis * axis.transpose();  // exactly π about a coordinate axis
+    const Mat3 R_g = Mat3::Identity();
+    ASSERT_EQ(attractive_field(R_g, R_d).norm(), 0.0);  // the paper's field holds R_g there for ever
+    const Vec3 rho = governed_attractive_field(R_g, R_d, floor);
+    EXPECT_NEAR(rho.norm(), floor, 1e-15);
+    EXPECT_NEAR(std::abs(rho.normalized().dot(axis)), 1.0, 1e-12);
+    // a step along it is a descent of P_a (the angle to R_d decreases)
+    const Mat3 moved = R_g * lie::exp(1e-3 * rho.normalized());
+    EXPECT_LT(attractive_potential(moved, R_d), attractive_potential(R_g, R_d));
+    EXPECT_LT(lie::distance(moved, R_d), std::numbers::pi - 0.9e-3);
+  }
+}
+
+TEST(NavigationField, TheGovernedAttractionIsThePapersAwayFromHalfTurnsAndContinuous) {
+  const double floor = 0.05;
+  for (int i = 0; i < 500; ++i) {
+    const Mat3 R_g = test::random_rotation();
+    const Mat3 R_d = test::random_rotation();
+    const Vec3 paper = attractive_field(R_g, R_d);
+    const Vec3 governed = governed_attractive_field(R_g, R_d, floor);
+    if (paper.norm() >= floor || lie::distance(R_g, R_d) <= 0.5 * std::numbers::pi) {
+      EXPECT_EQ((governed - paper).norm(), 0.0);
+    } else {
+      EXPECT_NEAR(governed.norm(), floor, 1e-12);
+    }
+    EXPECT_EQ((governed_attractive_field(R_g, R_d, 0.0) - paper).norm(), 0.0);
+  }
+  // continuous where sin θ crosses the floor, beyond a quarter turn
+  const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
+  const double theta_edge = std::numbers::pi - std::asin(floor);
+  const Vec3 inside = governed_attractive_field(Mat3::Identity(), lie::exp((theta_edge + 1e-9) * axis), floor);
+  const Vec3 outside = governed_attractive_field(Mat3::Identity(), lie::exp((theta_edge - 1e-9) * axis), floor);
+  EXPECT_LE((inside - outside).norm(), 1e-8);
+  // below a quarter turn a small field is the paper's (R_g near R_d)
+  const Mat3 near = lie::exp(1e-4 * axis);
+  EXPECT_EQ((governed_attractive_field(Mat3::Identity(), near, floor) - attractive_field(Mat3::Identity(), near)).norm(),
+            0.0);
+}
+
 }  // namespace
 }  // namespace attiguard::governor

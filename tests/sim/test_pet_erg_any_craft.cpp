@@ -97,6 +97,51 @@ TEST(PetErgAnyCraft, SymmetricSunConvergesWithDefaultsAndTheTieBreakInBothLoops)
   }
 }
 
+// docs/pet-erg.md, section 4, "Half-turns": a slew of exactly π (R_d given as a matrix, so that
+// sk(R_0ᵀR_d) = 0 exactly) left R_g at P_a's maximum for ever ("stalled, reference 180 deg short").
+// A CubeSat, a 2 t craft with products of inertia and a station, in the continuous and the flight
+// loop, each about two body axes, with a keep-out cone off the way: all converge with every
+// value derived and the constraints kept.
+TEST(PetErgAnyCraft, ExactHalfTurnsConvergeWithDefaultsAcrossCrafts) {
+  struct Craft {
+    const char* name;
+    Mat3 J;
+    double tau;
+  };
+  Mat3 J2t;
+  J2t << 2000.0, 50.0, -30.0, 50.0, 1800.0, 20.0, -30.0, 20.0, 2400.0;
+  const Craft crafts[] = {{"cubesat", Vec3(0.03, 0.035, 0.01).asDiagonal(), 2e-3},
+                          {"craft_2t", J2t, 0.4},
+                          {"station", Vec3(4e6, 5e6, 7e6).asDiagonal(), 2.0}};
+  for (const Craft& c : crafts) {
+    for (const Vec3& axis : {Vec3(0.0, 0.0, 1.0), Vec3(1.0, 0.0, 0.0)}) {
+      for (bool flight : {false, true}) {
+        Mat3 R_d = -Mat3::Identity();
+        R_d += 2.0 * axis * axis.transpose();
+        const double t_bb = dynamics::eigenaxis_bang_bang_time(c.J, Mat3::Identity(), R_d, c.tau);
+        std::string s = "kind = \"pet_erg\"\nname = \"half_turn\"\n[body]\ninertia = " + mat(c.J) + "\n";
+        s += "[initial]\nattitude = { matrix = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] }\n";
+        s += "[desired]\nattitude = { matrix = " + mat(R_d) + " }\n";
+        s += "[control]\ntau_max = " + num(c.tau) + "\n";
+        if (flight) s += "control_period = " + num(t_bb / 300.0) + "\n";
+        // a cone on the body axis that the half turn does not move (its direction away from both ends)
+        s += "[[cones]]\ntype = \"keep_out\"\naxis_b = " + vec(axis) + "\ndirection_i = " +
+             vec(Vec3(axis + 2.0 * axis.unitOrthogonal()).normalized()) + "\nhalf_angle_deg = 15.0\n";
+        s += "[simulation]\nduration = " + num(40.0 * t_bb) + "\noutput_interval = " + num(0.8 * t_bb) + "\n";
+        const PetErgScenario sc = scenario::parse_pet_erg(scenario::parse_document(s, "half_turn.toml"));
+        ASSERT_EQ(lie::distance(sc.R0_ib, sc.desired.at(0.0)), std::numbers::pi);
+        const PetErgResult r = simulate_pet_erg(sc);
+        EXPECT_TRUE(converged_with_constraints(r, sc))
+            << c.name << (flight ? " flight" : " continuous") << ": " << kPetErgOutcomeNames.name(r.outcome);
+        EXPECT_LE(r.convergence_time, 30.0 * t_bb) << c.name;
+        std::printf("[ figures  ] half turn, %s about %s, %s: converged at %.4g s = %.3gx bang-bang\n", c.name,
+                    axis(2) == 1.0 ? "z" : "x", flight ? "flight loop" : "continuous", r.convergence_time,
+                    r.convergence_time / t_bb);
+      }
+    }
+  }
+}
+
 struct Random {
   std::mt19937_64 gen;
   std::uniform_real_distribution<double> u{0.0, 1.0};

@@ -17,6 +17,7 @@
 #include "attiguard/scenario/read_reach.hpp"
 #include "attiguard/scenario/read_rigid_body.hpp"
 #include "attiguard/scenario/read_waypoint.hpp"
+#include "attiguard/sim/mission_kind_prediction.hpp"
 #include "attiguard/sim/mission_run.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
 #include "attiguard/sim/planned_run.hpp"
@@ -98,6 +99,12 @@ std::string waypoint_check_report(const Document& doc) {
   return sim::prediction_report(scenario::parse_waypoint(doc));
 }
 
+/// `check`'s report of a mission scenario: the mission prediction with the turns at the pace of
+/// its governor (docs/mission.md, "Prediction").
+std::string mission_check_report(const Document& doc) {
+  return sim::mission_prediction_report(scenario::parse_mission(doc));
+}
+
 /// `check` of a simulation kind: parse (and validate) only.
 template <auto Parse>
 void check_kind(const Document& doc) {
@@ -164,7 +171,7 @@ constexpr std::array<KindHandler, 5> registry{{
     {"mission",
      "waypoint guidance through the PET-ERG: pointing cones and torque limit kept during the "
      "slews; also flies the unconstrained twin",
-     &check_kind<&scenario::parse_mission>, &run_mission, &mission_outcome_line},
+     &check_kind<&scenario::parse_mission>, &run_mission, &mission_outcome_line, nullptr, &mission_check_report},
     {"reach",
      "ConReach contraction-based reachability and safety verification (use `attiguard reach`)",
      &check_kind<&scenario::parse_reach>, &run_reach, &reach_outcome_line},

@@ -122,7 +122,7 @@ bool AttitudeGovernor::admissible_move(const Mat3& R_ib, const Vec3& omega_b,
 }
 
 Vec3 AttitudeGovernor::navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept {
-  return governor::navigation_field(cones_.span(), R_g, R_d);
+  return governor::navigation_field(cones_.span(), R_g, R_d, std::min(params_.epsilon, kTieBreakFloorCap));
 }
 
 bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,

@@ -124,7 +124,8 @@ class AttitudeGovernor {
   /// The level compared with Γ: V, or with robust margins W = V − ε ωᵀJ sk(RᵀR_g)^∨
   /// (docs/pet-erg.md, section 13).
   [[nodiscard]] double level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
-  /// ρ_n(R_d, R_g) = −grad(P_a + Σ P_r) [PET-ERG Sec. III-B.2].
+  /// ρ_n(R_d, R_g) = −grad(P_a + Σ P_r) [PET-ERG Sec. III-B.2], its attraction floored at
+  /// min(ε, kTieBreakFloorCap) near a half turn (docs/pet-erg.md, section 4, "Half-turns").
   [[nodiscard]] Vec3 navigation_field(const Mat3& R_g, const Mat3& R_d) const noexcept;
   /// Trigger condition [PET-ERG eq. (5)]: Γ(R_g) − c_Γ V ≥ 0 [PET-ERG eq. (5)]; with robust margins
   /// V → W + e_W of the measured state (docs/pet-erg.md, section 13).

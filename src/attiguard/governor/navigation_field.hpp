@@ -33,6 +33,23 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return lie::vee(lie::sk(R_g.transpose() * R_d));
 }
 
+/// The attractive field the governor follows (docs/pet-erg.md, section 4, "Half-turns"): ρ_a of
+/// attractive_field, except beyond a quarter turn (θ = d(R_g, R_d) > π/2) where ‖ρ_a‖ = sin θ is
+/// below `floor`: there max(sin θ, floor) n̂ with n̂ the axis of log(R_gᵀR_d). At θ = π every
+/// direction is a critical point of P_a (its maximum) and ρ_a = 0 would hold R_g there for ever;
+/// log's axis (well defined up to its sign, which log fixes) is a descent direction, and the field is
+/// continuous where sin θ = floor. Only the direction of ξ changes: its magnitude is the DSM's
+/// [PET-ERG eqs. (4)-(6)], on which safety rests. floor ≤ 0 gives attractive_field.
+[[nodiscard]] inline Vec3 governed_attractive_field(const Mat3& R_g, const Mat3& R_d, double floor) noexcept {
+  const Mat3 E = R_g.transpose() * R_d;
+  const Vec3 rho = lie::vee(lie::sk(E));
+  if (!(floor > 0.0) || E.trace() >= 1.0 || rho.norm() >= floor) return rho;  // tr E = 1 + 2 cos θ
+  const Vec3 w = lie::log(E);
+  const double theta = w.norm();
+  if (!(theta > 0.0)) return rho;
+  return (floor / theta) * w;
+}
+
 /// Gradient of c(R_g) = a_cᵀR_g a_b: g_c = a_b × (R_gᵀa_c), ‖g_c‖ = sin β_g (constraint [PET-ERG eq. (2b)] of
 /// the PET-ERG paper; docs/errata.md, PET-ERG 1d).
 [[nodiscard]] inline Vec3 constraint_gradient(const ConeConstraint& cone, const Mat3& R_g) noexcept {
@@ -85,10 +102,12 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return p;
 }
 
-/// Navigation field ρ_n(R_d, R_g) = −grad P = ρ_a + Σ_i ρ_r,i [PET-ERG Sec. III-B.2].
+/// Navigation field ρ_n(R_d, R_g) = −grad P = ρ_a + Σ_i ρ_r,i [PET-ERG Sec. III-B.2]; with
+/// `attraction_floor` > 0 the attractive part is governed_attractive_field's (docs/pet-erg.md,
+/// section 4, "Half-turns").
 [[nodiscard]] inline Vec3 navigation_field(std::span<const ConeConstraint> cones, const Mat3& R_g,
-                                           const Mat3& R_d) noexcept {
-  Vec3 rho = attractive_field(R_g, R_d);
+                                           const Mat3& R_d, double attraction_floor = 0.0) noexcept {
+  Vec3 rho = governed_attractive_field(R_g, R_d, attraction_floor);
   for (const ConeConstraint& cone : cones) {
     rho += repulsive_field(cone, R_g);
   }

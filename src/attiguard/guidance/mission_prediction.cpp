@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "attiguard/lie/shortest_arc.hpp"
+
 namespace attiguard::guidance {
 
 namespace {
@@ -18,6 +20,28 @@ double angle_between(const Vec3& a, const Vec3& b) noexcept {
   const double nb = b.norm();
   if (!(na > 0.0) || !(nb > 0.0)) return 0.0;
   return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// The turn from R_from_ib to R_to_ib: craft.turn_time when set, else the PID's eigenaxis model
+/// predicted_turn_time over the angle between the thrust axes.
+double turn_time(const PredictionCraft& craft, const MissionParams& p, const lie::Mat3& R_from_ib,
+                 const lie::Mat3& R_to_ib, const Vec3& x_from_i, const Vec3& x_to_i) {
+  if (craft.turn_time) return craft.turn_time(R_from_ib, R_to_ib);
+  return predicted_turn_time(craft, angle_between(x_from_i, x_to_i), p.pointing_tolerance);
+}
+
+/// The steady attitude that points x_b along `direction_i` from R_ib by the shortest arc
+/// (guidance/leg_attitudes.hpp).
+lie::Mat3 pointed_along(const lie::Mat3& R_ib, const Vec3& direction_i) noexcept {
+  return lie::shortest_arc(R_ib.col(0), direction_i) * R_ib;
+}
+
+/// R_ib turned by π about its z axis: the flip of guidance/leg_attitudes.hpp.
+lie::Mat3 flipped(const lie::Mat3& R_ib) noexcept {
+  lie::Mat3 Rz = lie::Mat3::Identity();
+  Rz(0, 0) = -1.0;
+  Rz(1, 1) = -1.0;
+  return R_ib * Rz;
 }
 
 /// Positive root of A x² + B x − C = 0 (A, C ≥ 0, B ≥ 0), in the form that keeps its digits.
@@ -49,18 +73,20 @@ struct LateralBrake {
   double delta_v{0.0};
 };
 LateralBrake lateral_brake(const MissionParams& p, const PredictionCraft& craft, Vec3& p_i, Vec3& v_i,
-                           Vec3& x_b_i, const Vec3& wp) noexcept {
+                           Vec3& x_b_i, lie::Mat3& R_ib, const Vec3& wp) {
   LateralBrake b;
   const Vec3 e = wp - p_i;
   const double lateral = (v_i - e * (closing_speed(e, v_i) / std::max(e.norm(), 1e-300))).norm();
   if (!(p.brake_speed > 0.0) || !(lateral > std::max(p.brake_speed, 0.25 * p.cruise_speed))) return b;
   const double a = p.T_max / p.mass;
   const double speed = v_i.norm();
-  b.turn = predicted_turn_time(craft, angle_between(x_b_i, -v_i), p.pointing_tolerance);
+  const lie::Mat3 R_brake = pointed_along(R_ib, -v_i);
+  b.turn = turn_time(craft, p, R_ib, R_brake, x_b_i, -v_i);
   b.time = b.turn + speed / a;
   b.delta_v = speed;
   p_i += v_i * (b.turn + 0.5 * speed / a);
   x_b_i = -v_i / speed;
+  R_ib = R_brake;
   v_i.setZero();
   return b;
 }
@@ -162,10 +188,10 @@ MissionPrediction predict_mission(const MissionParams& p, const PredictionCraft&
   MissionPrediction out;
   const double a = p.T_max / p.mass;
   const double a_brake = p.braking_margin * a;
-  const double t_flip = predicted_turn_time(craft, std::numbers::pi, p.pointing_tolerance);
   Vec3 p_i = start.p_i;
   Vec3 v_i = start.v_i;
-  Vec3 x_b_i = start.x_b_i;
+  lie::Mat3 R_ib = start.R_ib;
+  Vec3 x_b_i = R_ib.col(0);
   for (const Vec3& wp : waypoints_i) {
     LegPrediction leg;
     const double L0 = (wp - p_i).norm();
@@ -176,9 +202,13 @@ MissionPrediction predict_mission(const MissionParams& p, const PredictionCraft&
       leg.delta_v = fp.delta_v;
       leg.rct_only = true;
     } else {
-      const LateralBrake b = lateral_brake(p, craft, p_i, v_i, x_b_i, wp);
-      // Align: the turn to the line of sight, drifting meanwhile.
-      const double t_align = predicted_turn_time(craft, angle_between(x_b_i, wp - p_i), p.pointing_tolerance);
+      const LateralBrake b = lateral_brake(p, craft, p_i, v_i, x_b_i, R_ib, wp);
+      // Align: the turn to the line of sight, drifting meanwhile; the flip turns by π.
+      const lie::Mat3 R_acc = pointed_along(R_ib, wp - p_i);
+      const double t_align = turn_time(craft, p, R_ib, R_acc, x_b_i, wp - p_i);
+      const double t_flip = craft.turn_time ? craft.turn_time(R_acc, flipped(R_acc))
+                                            : predicted_turn_time(craft, std::numbers::pi, p.pointing_tolerance);
+      R_ib = flipped(R_acc);
       p_i += v_i * t_align;
       const Vec3 e = wp - p_i;
       const double L = e.norm();

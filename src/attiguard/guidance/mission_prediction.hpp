@@ -8,6 +8,7 @@
 /// [Waypoint eqs. (28)-(30)] along its switching line. Set-up code (check, summary.json): it
 /// allocates; it is not in the flight loop.
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -16,19 +17,27 @@
 
 namespace attiguard::guidance {
 
+/// The time of one attitude turn of the mission, from the steady attitude R_from_ib to R_to_ib
+/// (both at rest), until the pointing error is within the guidance's pointing tolerance [s]
+/// (docs/mission.md, "Prediction"). Set-up code: may allocate and simulate.
+using TurnTimeModel = std::function<double(const lie::Mat3& R_from_ib, const lie::Mat3& R_to_ib)>;
+
 /// What the prediction needs besides the mission parameters.
 struct PredictionCraft {
   double J_max{20.0};             ///< largest principal inertia [kg·m²]
   double max_wheel_torque{0.0};   ///< per-axis wheel limit, 0 = none [N·m]
   double control_period{0.1};     ///< T_s [s]
   control::QuaternionPidGains gains{};  ///< the attitude PID flown [Waypoint eq. (27)]
+  /// The turns' model: empty = predicted_turn_time with `gains` (kind waypoint); kind mission
+  /// sets the governed slew of its attitude loop (sim/mission_prediction.hpp).
+  TurnTimeModel turn_time{};
 };
 
 /// The start of the mission.
 struct PredictionStart {
   Vec3 p_i{Vec3::Zero()};    ///< position [m]
   Vec3 v_i{Vec3::Zero()};    ///< velocity [m/s]
-  Vec3 x_b_i{Vec3::UnitX()}; ///< thrust axis x_b in the inertial frame (first column of R_ib)
+  lie::Mat3 R_ib{lie::Mat3::Identity()};  ///< attitude; its first column is the thrust axis x_b
 };
 
 /// The predicted leg (docs/waypoint.md, "Prediction").
@@ -67,7 +76,9 @@ struct FinePhase {
 /// The prediction of a whole mission (docs/waypoint.md, "Prediction"): each leg's turn to the
 /// line of sight, acceleration by (13) to min(V_d, the acceleration fraction, the braking point),
 /// coast, half-turn flip, braking along the curve of (16) at γ T_max/m down to the hand-over,
-/// and the fine phase; legs the sequencer gives to the RCT alone are predicted as such.
+/// and the fine phase; legs the sequencer gives to the RCT alone are predicted as such. The
+/// turns are between the steady attitudes of guidance/leg_attitudes.hpp (the shortest arc that
+/// points x_b along the leg, then π about z_b for the flip), timed by craft.turn_time when set.
 [[nodiscard]] MissionPrediction predict_mission(const MissionParams& p, const PredictionCraft& craft,
                                                 const PredictionStart& start,
                                                 std::span<const Vec3> waypoints_i);

@@ -15,6 +15,8 @@
 #include "attiguard/scenario/document_tree.hpp"
 #include "attiguard/scenario/table_reader.hpp"
 #include "attiguard/scenario/read_waypoint.hpp"
+#include "attiguard/scenario/resolved_scenario.hpp"
+#include "attiguard/sim/mission_kind_prediction.hpp"
 
 namespace attiguard::scenario {
 
@@ -48,6 +50,28 @@ void check_leg_attitudes(const TableReader& root, const sim::MissionScenario& sc
   }
 }
 
+/// [guidance] flip_lead_time when the file leaves it out (docs/mission.md, "Prediction"): 1.5
+/// times the longest predicted flip of the nominal legs (guidance/leg_attitudes.hpp) flown by
+/// the mission's own attitude loop (sim::predicted_governed_turn), instead of the waypoint kind's
+/// PID slew, which the mission does not fly. Unchanged when no leg has a flip or a flip does not
+/// converge within the duration (the prediction then warns).
+void derive_flip_lead_time(const TableReader& root, sim::MissionScenario& sc) {
+  sim::WaypointScenario& w = sc.waypoint;
+  if (root.table_or_empty("guidance").has("flip_lead_time")) return;
+  const std::vector<guidance::LegAttitude> legs = guidance::nominal_leg_attitudes(
+      w.R0_ib, w.p0_i, w.waypoints_i, std::max(w.mission.arrival_radius, 0.5 * w.mission.replan_distance));
+  double longest = 0.0;
+  for (std::size_t k = 0; k + 1 < legs.size(); k += 2) {
+    const sim::PredictedTurn flip = sim::predicted_governed_turn(sc, sc.params.mode, legs[k].R_id, legs[k + 1].R_id);
+    if (!flip.converged) return;
+    longest = std::max(longest, flip.time);
+  }
+  if (longest > 0.0) {
+    w.mission.flip_lead_time = 1.5 * longest;
+    DefaultsRecorder::replace_derived("guidance.flip_lead_time", w.mission.flip_lead_time);  // scenario.resolved.toml
+  }
+}
+
 }  // namespace
 
 sim::MissionScenario parse_mission(const Document& doc) {
@@ -77,6 +101,7 @@ sim::MissionScenario parse_mission(const Document& doc) {
   if (planned) validated.mode = governor::GovernorMode::none;
   (void)make_governor(root, "control", validated, sc.cones);
   check_leg_attitudes(root, sc);
+  derive_flip_lead_time(root, sc);
   return sc;
 }
 

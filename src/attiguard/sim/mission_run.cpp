@@ -16,7 +16,9 @@
 #include "attiguard/io/interruption.hpp"
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/sim/cone_json.hpp"
+#include "attiguard/sim/mission_kind_prediction.hpp"
 #include "attiguard/sim/pet_erg_run.hpp"
+#include "attiguard/sim/waypoint_prediction.hpp"
 
 namespace attiguard::sim {
 
@@ -262,6 +264,34 @@ MissionFlights record_mission(const MissionScenario& sc, io::RowSink& rows,
   return f;
 }
 
+namespace {
+
+/// actual / predicted, null unless the flight completed and the prediction is positive.
+nlohmann::json time_over(bool completed, double actual, double predicted) {
+  return completed && predicted > 0.0 ? nlohmann::json(actual / predicted) : nlohmann::json(nullptr);
+}
+
+/// summary.json `prediction` (with its governor mode and whether every governed turn converged),
+/// `predicted_time`, `time_over_predicted` and each waypoint's `predicted_time` and
+/// `time_over_predicted` of the leg that ends there (docs/mission.md, "Prediction").
+void write_mission_prediction(nlohmann::json& summary, const MissionKindPrediction& kp, const MissionResult& own) {
+  const guidance::MissionPrediction& pr = kp.prediction;
+  summary["prediction"] = prediction_entry(pr);
+  summary["prediction"]["turns_converged"] = kp.all_turns_converged;
+  summary["predicted_time"] = pr.time;
+  summary["time_over_predicted"] = time_over(own.flight.completed, own.flight.total_time, pr.time);
+  double previous_arrival = 0.0;
+  nlohmann::json& wps = summary["waypoints"];
+  for (std::size_t k = 0; k < wps.size() && k < pr.legs.size(); ++k) {
+    const WaypointResult& w = own.flight.waypoints[k];
+    wps[k]["predicted_time"] = pr.legs[k].time;
+    wps[k]["time_over_predicted"] = time_over(w.reached, w.arrival_time - previous_arrival, pr.legs[k].time);
+    if (w.reached) previous_arrival = w.arrival_time;
+  }
+}
+
+}  // namespace
+
 nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& f) {
   const governor::GovernorMode mode = f.mode;
   const governor::GovernorMode twin_mode = f.twin_mode;
@@ -290,6 +320,7 @@ nlohmann::json mission_summary(const MissionScenario& sc, const MissionFlights& 
                    {"delta_v", w.delta_v()}});
   }
   summary["waypoints"] = wps;
+  write_mission_prediction(summary, predict_mission_kind(sc, mode), own);
   summary["constrained"] = flight_json(sc, own_constrained ? mode : twin_mode, con);
   summary["unconstrained"] = flight_json(sc, governor::GovernorMode::none, unc);
   // The cost of the constraints only compares two completed flights.

@@ -15,7 +15,7 @@ guidance::MissionPrediction predict_waypoint_mission(const WaypointScenario& sc)
   guidance::PredictionStart start;
   start.p_i = sc.p0_i;
   start.v_i = sc.v0_i;
-  start.x_b_i = sc.R0_ib.col(0);
+  start.R_ib = sc.R0_ib;
   return guidance::predict_mission(sc.mission, craft, start, sc.waypoints_i);
 }
 

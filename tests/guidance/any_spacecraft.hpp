@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -145,6 +146,10 @@ struct Verdict {
   double time_ratio{0.0};
   double predicted_ratio{0.0};  ///< mission time over sim::predict_waypoint_mission's (completed runs)
   double fine_fraction{0.0};    ///< time in mode fine over the mission time (completed runs)
+  /// Time in mode fine by how it was entered ("decelerate->fine: closest_approach", an
+  /// RCT-only leg "fine->fine: accuracy_met", …) [s] (completed runs; docs/waypoint.md, "Craft classes").
+  std::map<std::string, double> fine_time_by_entry;
+  double total_time{0.0};       ///< the mission time [s] (completed runs)
 };
 
 inline Verdict judge(const Case& c) {
@@ -177,7 +182,10 @@ inline Verdict judge(const Case& c) {
       if (res.transitions[i].to != guidance::Mode::fine) continue;
       const double end = i + 1 < res.transitions.size() ? res.transitions[i + 1].t : res.total_time;
       t_fine += end - res.transitions[i].t;
+      v.fine_time_by_entry[std::string(guidance::mode_name(res.transitions[i].from)) + "->fine: " +
+                           guidance::reason_name(res.transitions[i].reason)] += end - res.transitions[i].t;
     }
+    v.total_time = res.total_time;
     v.fine_fraction = res.total_time > 0.0 ? t_fine / res.total_time : 0.0;
     v.predicted_ratio = predicted > 0.0 ? res.total_time / predicted : 0.0;
   } catch (const NumericalError& e) {

@@ -128,6 +128,8 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
     int rejected = 0, completed = 0, incomplete = 0, failed = 0;
     std::vector<double> p_ratio, user_ratio, fine;
     std::map<std::string, int> reasons;
+    std::map<std::string, double> fine_by_entry;
+    double completed_time = 0.0;
     for (int k = 0; k < runs; ++k) {
       const Verdict& v = verdicts[static_cast<std::size_t>(k)];
       if (v.kind == Verdict::rejected) {
@@ -139,6 +141,8 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
         p_ratio.push_back(v.predicted_ratio);
         user_ratio.push_back(v.time_ratio);
         fine.push_back(v.fine_fraction);
+        completed_time += v.total_time;
+        for (const auto& [entry, t] : v.fine_time_by_entry) fine_by_entry[entry] += t;
       } else if (v.kind == Verdict::incomplete) {
         ++incomplete;
         EXPECT_FALSE(v.reason.empty()) << class_name(cls) << " " << k;
@@ -156,6 +160,12 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
                 accepted > 0 ? 100.0 * completed / accepted : 0.0, incomplete, failed, median(p_ratio),
                 quantile(p_ratio, 0.95), median(user_ratio), median(fine));
     for (const auto& [why, count] : reasons) std::printf("[  reason  ] %5d  %s\n", count, why.c_str());
+    // Where the fine phase's time goes: its share of all completed missions' time by how fine
+    // control was entered (docs/waypoint.md, "Craft classes").
+    for (const auto& [entry, t] : fine_by_entry) {
+      std::printf("[  fine    ] %-45s %5.1f %% of the completed missions' time\n", entry.c_str(),
+                  completed_time > 0.0 ? 100.0 * t / completed_time : 0.0);
+    }
     EXPECT_EQ(failed, 0) << class_name(cls);
     EXPECT_GE(completed, accepted * 9 / 10) << class_name(cls);  // see docs/waypoint.md for the measured rate
     EXPECT_LE(rejected, runs / 4) << class_name(cls);

@@ -29,6 +29,8 @@ static_assert(noexcept(std::declval<AttitudeGovernor&>().step(0.0, std::declval<
                                                               std::declval<CM>())));
 static_assert(noexcept(std::declval<const AttitudeGovernor&>().evaluate(
     std::declval<CM>(), std::declval<CV>(), std::declval<CM>(), std::declval<CM>(), true)));
+static_assert(noexcept(std::declval<const AttitudeGovernor&>().rates(
+    std::declval<CM>(), std::declval<CV>(), std::declval<CM>(), std::declval<CM>(), true)));
 static_assert(noexcept(std::declval<const ReferenceSchedule&>().at(0.0)));
 
 GovernorParams paper_params(GovernorMode mode = GovernorMode::pet) {
@@ -172,6 +174,44 @@ TEST(AttitudeGovernor, EvaluateExposesEveryQuantity) {
   // Mode none: R_g is R_d itself.
   const AttitudeGovernor none(paper_params(GovernorMode::none), cones);
   EXPECT_LE((none.evaluate(R, w, R, R_d, true).R_g - R_d).norm(), 0.0);
+}
+
+// rates() is evaluate()'s τ and ξ bit for bit, in every mode, with the flag up and down, a held
+// tie-break, robust margins, states inside and outside {V ≤ Γ}.
+TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
+  const std::vector<ConeConstraint> cones{paper_cone(),
+                                          keep_in_cone(Vec3(1, 0, 0), Vec3(0, 1, 0), 2.0)};
+  GovernorParams robust = paper_params();
+  robust.bounded_step = true;
+  robust.robust = RobustMargin{};
+  robust.robust->epsilon = 0.05;
+  robust.robust->delta = 0.1;
+  robust.robust->measurement_margin = 0.01;
+  robust.robust->max_reference_step = 0.1;
+  const std::vector<GovernorParams> variants{paper_params(GovernorMode::pet),
+                                             paper_params(GovernorMode::continuous),
+                                             paper_params(GovernorMode::none), robust};
+  int moving = 0;
+  for (const GovernorParams& p : variants) {
+    const AttitudeGovernor gov(p, cones);
+    for (int i = 0; i < 400; ++i) {
+      const Mat3 R = test::random_rotation();
+      const Mat3 R_g = i % 2 == 0 ? Mat3(R * lie::exp(test::random_vector_in_ball(0.5))) : test::random_rotation();
+      const Mat3 R_d = test::random_rotation();
+      const Vec3 w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
+      const TieBreak tie{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+      for (const bool flag : {true, false}) {
+        const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
+        const GovernorRates lean = gov.rates(R, w, R_g, R_d, flag, tie);
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_EQ(lean.tau_b[k], full.tau_b[k]);
+          EXPECT_EQ(lean.xi_g[k], full.xi_g[k]);
+        }
+        moving += full.xi_g.squaredNorm() > 0.0 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(moving, 100);  // both branches of ξ were compared
 }
 
 /// A hand-written flight loop: the body is propagated with RK4 under a torque held over each

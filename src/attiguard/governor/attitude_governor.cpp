@@ -98,10 +98,12 @@ double AttitudeGovernor::gamma_g(const Mat3& R_g) const noexcept {
   return pointing_threshold(cones_.span(), R_g, params_.gains.kp);
 }
 
-double AttitudeGovernor::gamma(const Mat3& R_g) const noexcept {
-  const double nominal = std::min({gamma_d_, gamma_g(R_g), gamma_cap_});
+double AttitudeGovernor::gamma_of(double gamma_g) const noexcept {
+  const double nominal = std::min({gamma_d_, gamma_g, gamma_cap_});
   return params_.robust ? (1.0 - params_.robust->delta) * nominal : nominal;
 }
+
+double AttitudeGovernor::gamma(const Mat3& R_g) const noexcept { return gamma_of(gamma_g(R_g)); }
 
 double AttitudeGovernor::level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept {
   if (!params_.robust) return lyapunov(R_ib, omega_b, R_g);
@@ -140,17 +142,17 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   const double decided = params_.robust ? out.W + params_.robust->measurement_margin : out.V;
   out.gamma_d = gamma_d_;
   out.gamma_g = gamma_g(out.R_g);
-  out.gamma = gamma(out.R_g);
+  out.gamma = gamma_of(out.gamma_g);
   out.trigger = flag;
   switch (params_.mode) {
     case GovernorMode::pet:
       out.tie_break = tie;
-      out.rho = governor::tie_break_field(tie, cones_.span(), out.R_g, R_d, navigation_field(out.R_g, R_d));
+      out.rho = held_field(out.R_g, R_d, tie);
       out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       break;
     case GovernorMode::continuous:
       out.tie_break = tie;
-      out.rho = governor::tie_break_field(tie, cones_.span(), out.R_g, R_d, navigation_field(out.R_g, R_d));
+      out.rho = held_field(out.R_g, R_d, tie);
       out.xi_g = erg_reference_rate(params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       out.trigger = true;
       break;
@@ -163,6 +165,29 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   for (int i = 0; i < cones_.size(); ++i) {
     out.margins[static_cast<std::size_t>(i)] = pointing_margin(cones_[i], R_ib);
   }
+  return out;
+}
+
+Vec3 AttitudeGovernor::held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept {
+  return governor::tie_break_field(tie, cones_.span(), R_g, R_d, navigation_field(R_g, R_d));
+}
+
+GovernorRates AttitudeGovernor::rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
+                                      bool flag, const TieBreak& tie) const noexcept {
+  GovernorRates out;
+  const bool none = params_.mode == GovernorMode::none || params_.mode == GovernorMode::planned;
+  const Mat3& R_ref = none ? R_d : R_g;
+  // RᵀR_g once for τ [PET-ERG eq. (3)] and V, each formed from it as pd_torque and pd_lyapunov do.
+  const Mat3 R_e = R_ib.transpose() * R_ref;
+  out.tau_b = params_.gains.kp * lie::vee(lie::sk(R_e)) - params_.gains.kd * omega_b;
+  // ξ = 0 without a governor and, in mode pet, while the flag of [PET-ERG eq. (5)] is held down.
+  if (none || (params_.mode == GovernorMode::pet && !flag)) return out;
+  const double gamma = gamma_of(gamma_g(R_ref));
+  const double decided = params_.robust ? decision_level(R_ib, omega_b, R_ref)
+                                        : 0.5 * omega_b.dot(params_.J * omega_b) + params_.gains.kp * lie::phi(R_e);
+  // [PET-ERG eqs. (4), (6)] give ξ = 0 where κ max{Γ − V, 0} is not positive: no ρ_n needed there.
+  if (dynamic_safety_margin(params_.kappa, gamma, decided) <= 0.0) return out;
+  out.xi_g = erg_reference_rate(params_.kappa, gamma, decided, held_field(R_ref, R_d, tie), params_.epsilon);
   return out;
 }
 

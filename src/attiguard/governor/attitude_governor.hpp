@@ -103,6 +103,13 @@ struct GovernorOutput {
   [[nodiscard]] double min_margin() const noexcept;
 };
 
+/// What the closed-loop field of [PET-ERG eqs. (1), (3)-(6)] reads from the governor at one
+/// instant: the PD torque and the reference rate, nothing else (AttitudeGovernor::rates).
+struct GovernorRates {
+  Vec3 tau_b{Vec3::Zero()};  ///< PD torque [PET-ERG eq. (3)] towards R_g (R_d in mode none) [N·m]
+  Vec3 xi_g{Vec3::Zero()};   ///< body rate of R_g, [PET-ERG eq. (6)] in mode pet, (4) in mode continuous [rad/s]
+};
+
 /// PD law [PET-ERG eq. (3)] + [PET-ERG eqs. (5)-(6)] / ERG [PET-ERG eq. (4)], as one flight-loop object.
 class AttitudeGovernor {
  public:
@@ -138,6 +145,11 @@ class AttitudeGovernor {
   /// with the detour (docs/pet-erg.md, section 4, "Saddles: the tie-break").
   [[nodiscard]] GovernorOutput evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                         const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
+  /// τ and ξ of evaluate() alone, bit for bit the same, for the integrator's stages
+  /// [PET-ERG eqs. (3)-(6)]: no margins of [PET-ERG eq. (2b)], Γ_g once, and V, Γ and ρ_n only
+  /// where ξ needs them (not with the flag of [PET-ERG eq. (5)] down, ρ_n not when Γ ≤ V).
+  [[nodiscard]] GovernorRates rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
+                                    bool flag, const TieBreak& tie = {}) const noexcept;
   /// The saddle tie-break at a sampling instant for R_g and R_d (update_tie_break with the floor
   /// min(ε, kTieBreakFloorCap) on ‖ρ_a‖; docs/pet-erg.md, section 4, "Saddles: the tie-break"); the state of the flight
   /// loop is not changed.
@@ -190,6 +202,10 @@ class AttitudeGovernor {
   /// `scale` ∈ (0, 1] shortens the allowed length; `applied` receives the move taken (0 if none).
   [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt, double scale,
                                   Vec3& applied) const noexcept;
+  /// Γ from Γ_g(R_g) already computed: gamma(R_g) without computing Γ_g again [PET-ERG Sec. III-B.1].
+  [[nodiscard]] double gamma_of(double gamma_g) const noexcept;
+  /// ρ_n with the held tie-break's detour (docs/pet-erg.md, section 4) [PET-ERG Sec. III-B.2].
+  [[nodiscard]] Vec3 held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept;
   /// The level the decisions use: V, or W + e_W with robust margins (section 13).
   [[nodiscard]] double decision_level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// May R_g be moved to `candidate` for the measured (R, ω)? V ≤ Γ there; with robust margins

@@ -44,7 +44,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   governor::TieBreak tie;
 
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
-    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], sc.desired.at(t), flag, tie);
+    const governor::GovernorRates out = gov.rates(s.R[0], s.x, s.R[1], sc.desired.at(t), flag, tie);
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3) = out.xi_g;

@@ -6,7 +6,7 @@
 # threads. Prints the refusals by reason, the completion rates and the figures against the
 # ideal, the prediction and the user's estimate. Exits non-zero if an accepted run of today's
 # generator ends incomplete, if any run ends in NaN or divergence, or if a class completes less
-# than 90 % of its accepted runs. Needs build/ (scripts/build.sh).
+# than 98 % of its accepted runs. Needs build/ (scripts/build.sh).
 # Usage: scripts/waypoint_any_spacecraft.sh [RUNS] [THREADS] [CLASS_RUNS]
 #   10^4 crafts over today's range and the three classes: scripts/waypoint_any_spacecraft.sh 2500 2 2500
 set -euo pipefail

@@ -75,6 +75,20 @@ TEST(RctPositionLaw, Erratum28PrintedSignDivergesCorrectedSignConverges) {
   EXPECT_LT((R * f_b - 100.0 * (0.02 * e - 0.5 * v)).norm(), 1e-12);
 }
 
+// Issue 42: the lateral RCT force damps the speed across the line of sight only: perpendicular
+// to e, −m k v_⊥ in inertial axes, zero for motion along e or at e = 0.
+TEST(RctPositionLaw, LateralForceDampsOnlyTheSpeedAcrossTheLineOfSight) {
+  const lie::Mat3 R = test::random_rotation();
+  const Vec3 e(30.0, -10.0, 5.0);
+  const Vec3 v(0.4, 0.3, -0.2);
+  const Vec3 f_i = R * rct_lateral_force(50.0, R, e, v, 0.7);
+  EXPECT_LT(std::abs(f_i.dot(e)), 1e-12 * f_i.norm() * e.norm());
+  const Vec3 v_perp = v - e * (e.dot(v) / e.squaredNorm());
+  EXPECT_LT((f_i + 50.0 * 0.7 * v_perp).norm(), 1e-12 * f_i.norm());
+  EXPECT_LT(rct_lateral_force(50.0, R, e, 2.5 * e, 0.7).norm(), 1e-12);
+  EXPECT_EQ(rct_lateral_force(50.0, R, Vec3::Zero(), v, 0.7), Vec3::Zero());
+}
+
 // Issue 25: far from the waypoint the position term asks for the braking curve's speed
 // √(2 b ‖e‖) instead of the switching line's λ‖e‖; inside 2b/λ² it is (28) unchanged.
 TEST(RctPositionLaw, BrakingCurveCapsTheApproachSpeedFarFromTheWaypoint) {

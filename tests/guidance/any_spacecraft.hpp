@@ -146,6 +146,9 @@ struct Verdict {
   double time_ratio{0.0};
   double predicted_ratio{0.0};  ///< mission time over sim::predict_waypoint_mission's (completed runs)
   double fine_fraction{0.0};    ///< time in mode fine over the mission time (completed runs)
+  /// The part of fine_fraction in legs flown by the RCT alone (a leg started in fine: the
+  /// sequencer's choice for legs within half the re-plan distance) (completed runs)
+  double rct_leg_fraction{0.0};
   /// Time in mode fine by how it was entered ("decelerate->fine: closest_approach", an
   /// RCT-only leg "fine->fine: accuracy_met", …) [s] (completed runs; docs/waypoint.md, "Craft classes").
   std::map<std::string, double> fine_time_by_entry;
@@ -178,6 +181,11 @@ inline Verdict judge(const Case& c) {
     v.time_ratio = c.ideal_time > 0.0 ? res.total_time / c.ideal_time : 0.0;
     const double predicted = sim::predict_waypoint_mission(sc).time;
     double t_fine = 0.0;
+    if (!res.transitions.empty() && res.transitions.front().from == guidance::Mode::fine) {
+      // The first leg started in fine control (an RCT-only leg): no transition entered it.
+      t_fine += res.transitions.front().t;
+      v.fine_time_by_entry["start->fine: rct_leg"] += res.transitions.front().t;
+    }
     for (std::size_t i = 0; i < res.transitions.size(); ++i) {
       if (res.transitions[i].to != guidance::Mode::fine) continue;
       const double end = i + 1 < res.transitions.size() ? res.transitions[i + 1].t : res.total_time;
@@ -187,6 +195,11 @@ inline Verdict judge(const Case& c) {
     }
     v.total_time = res.total_time;
     v.fine_fraction = res.total_time > 0.0 ? t_fine / res.total_time : 0.0;
+    double t_rct_legs = 0.0;
+    for (const auto& [entry, t] : v.fine_time_by_entry) {
+      if (entry.rfind("start->fine", 0) == 0 || entry.rfind("fine->fine", 0) == 0) t_rct_legs += t;
+    }
+    v.rct_leg_fraction = res.total_time > 0.0 ? t_rct_legs / res.total_time : 0.0;
     v.predicted_ratio = predicted > 0.0 ? res.total_time / predicted : 0.0;
   } catch (const NumericalError& e) {
     v.kind = Verdict::failed;

@@ -126,7 +126,7 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
     }
     for (std::thread& t : pool) t.join();
     int rejected = 0, completed = 0, incomplete = 0, failed = 0;
-    std::vector<double> p_ratio, user_ratio, fine;
+    std::vector<double> p_ratio, user_ratio, fine, handover_fine;
     std::map<std::string, int> reasons;
     std::map<std::string, double> fine_by_entry;
     double completed_time = 0.0;
@@ -141,6 +141,7 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
         p_ratio.push_back(v.predicted_ratio);
         user_ratio.push_back(v.time_ratio);
         fine.push_back(v.fine_fraction);
+        handover_fine.push_back(v.fine_fraction - v.rct_leg_fraction);
         completed_time += v.total_time;
         for (const auto& [entry, t] : v.fine_time_by_entry) fine_by_entry[entry] += t;
       } else if (v.kind == Verdict::incomplete) {
@@ -155,10 +156,10 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
     const int accepted = runs - rejected;
     std::printf("[ measured ] %-14s %d crafts (seed %llu): %d refused, %d completed (%.1f %% of accepted), "
                 "%d incomplete, %d NaN/divergence; time/predicted median %.3f p95 %.3f; time/user's "
-                "estimate median %.3f; fine-control share median %.3f\n",
+                "estimate median %.3f; fine-control share median %.3f (%.3f without the RCT-only legs)\n",
                 class_name(cls), runs, seed, rejected, completed,
                 accepted > 0 ? 100.0 * completed / accepted : 0.0, incomplete, failed, median(p_ratio),
-                quantile(p_ratio, 0.95), median(user_ratio), median(fine));
+                quantile(p_ratio, 0.95), median(user_ratio), median(fine), median(handover_fine));
     for (const auto& [why, count] : reasons) std::printf("[  reason  ] %5d  %s\n", count, why.c_str());
     // Where the fine phase's time goes: its share of all completed missions' time by how fine
     // control was entered (docs/waypoint.md, "Craft classes").
@@ -167,9 +168,39 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
                   completed_time > 0.0 ? 100.0 * t / completed_time : 0.0);
     }
     EXPECT_EQ(failed, 0) << class_name(cls);
-    EXPECT_GE(completed, accepted * 9 / 10) << class_name(cls);  // see docs/waypoint.md for the measured rate
+    EXPECT_GE(completed, accepted * 49 / 50) << class_name(cls);  // see docs/waypoint.md for the measured rate
     EXPECT_LE(rejected, runs / 4) << class_name(cls);
   }
+}
+
+/// Issue 42: the large chemical craft spend much of their missions in legs the RCT fly alone
+/// (legs within half the derived re-plan distance, docs/waypoint.md, "Craft classes"). That is
+/// the faster choice: the same crafts with those legs given to the main engine (the re-plan
+/// distance cut to max(30 δ_p, 20 δ)) take longer, or do not finish within 6× the prediction,
+/// because each main-engine leg costs two slow turns of a heavy craft on small wheels.
+TEST(AnySpacecraft, LargeChemicalCraftsFlyTheirShortLegsFasterWithTheRctAlone) {
+  const int runs = env_int("ATTIGUARD_RCT_LEG_RUNS", static_cast<int>(for_this_build(40, 4)));
+  int compared = 0, rct_faster = 0;
+  for (int k = 0; k < runs; ++k) {
+    const Case c = make_class_case(CraftClass::large_chemical, 25, k, 6.0);
+    sim::WaypointScenario sc = scenario::parse_waypoint(scenario::parse_document(c.toml, "large_chemical.toml"));
+    const sim::WaypointSimResult with_rct_legs = sim::simulate_waypoint(sc);
+    ASSERT_TRUE(with_rct_legs.finite) << k;
+    bool rct_leg = !with_rct_legs.transitions.empty() && with_rct_legs.transitions.front().from == guidance::Mode::fine;
+    for (const auto& tr : with_rct_legs.transitions) {
+      rct_leg = rct_leg || (tr.from == guidance::Mode::fine && tr.to == guidance::Mode::fine);
+    }
+    if (!with_rct_legs.completed || !rct_leg) continue;
+    sc.mission.replan_distance = std::max(30.0 * sc.mission.position_accuracy, 20.0 * sc.mission.arrival_radius);
+    const sim::WaypointSimResult main_engine = sim::simulate_waypoint(sc);
+    ASSERT_TRUE(main_engine.finite) << k;
+    ++compared;
+    if (!main_engine.completed || main_engine.total_time > with_rct_legs.total_time) ++rct_faster;
+  }
+  std::printf("[ measured ] large_chemical, %d crafts with RCT-only legs: faster with them in %d\n", compared,
+              rct_faster);
+  EXPECT_GT(compared, runs / 2);
+  EXPECT_GE(rct_faster, compared * 9 / 10);
 }
 
 }  // namespace

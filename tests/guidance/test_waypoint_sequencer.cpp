@@ -2,6 +2,7 @@
 // of random initial states and waypoint lists.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -82,6 +83,22 @@ FdStats check_feedforward(const sim::WaypointScenario& sc, bool antiparallel) {
   const sim::WaypointSimResult res = sim::simulate_waypoint(sc, observer);
   EXPECT_TRUE(res.finite);
   return st;
+}
+
+// Issue 42: the miss distance is the distance of closest approach of the straight line p + v t,
+// found here by brute force along the line; not closing is +∞.
+TEST(WaypointSequencerGeometry, MissDistanceIsTheClosestApproachOfTheStraightLine) {
+  const Vec3 e(120.0, -40.0, 15.0);
+  for (const Vec3& v : {Vec3(1.0, -0.2, 0.3), Vec3(0.5, -0.1, 0.05), Vec3(3.0, -1.0, 0.375)}) {
+    double best = e.norm();
+    for (int k = 0; k <= 400000; ++k) {
+      const double t = 1e-3 * k * (e.dot(v) / v.squaredNorm()) * 2.0 / 400.0;
+      best = std::min(best, (e - v * t).norm());
+    }
+    EXPECT_NEAR(miss_distance(e, v), best, 1e-6 * e.norm()) << v.transpose();
+  }
+  EXPECT_TRUE(std::isinf(miss_distance(e, Vec3(-1.0, 0.0, 0.0))));
+  EXPECT_EQ(miss_distance(Vec3::Zero(), Vec3(1.0, 0.0, 0.0)), 0.0);
 }
 
 TEST(WaypointSequencerFeedForward, MatchesFiniteDifferencesAlongASimulatedLegWithLateralDrift) {

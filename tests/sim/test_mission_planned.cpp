@@ -135,7 +135,9 @@ TEST(MissionPlanned, AnErgTableIsRefusedAtItsKey) {
 #endif
 
 // The cost of the constraints against the same unconstrained twin: smaller with planned slews
-// than with the PET-ERG (docs/mission.md, "Planned slews": -4.8 s against 128.6 s).
+// than with the PET-ERG (docs/mission.md, "Planned slews": -28.2 s against 75.1 s). The Δv cost
+// is the RCT's and the engine's quantum on either side (0.0445 against 0.040 m/s of 17.92 m/s
+// since the lateral RCT of issue 42; 0.0005 against 0.0020 before): within 0.5 % of the twin's Δv.
 TEST(MissionPlanned, TheConstraintsCostLessThanWithThePetErg) {
   using namespace attiguard;
   const sim::MissionScenario planned = mission_planned_test::load("mission_sun_constrained_planned");
@@ -147,7 +149,9 @@ TEST(MissionPlanned, TheConstraintsCostLessThanWithThePetErg) {
   EXPECT_EQ(a["unconstrained"]["total_time"], b["unconstrained"]["total_time"]);  // the same twin
   EXPECT_LT(a["time_cost"].get<double>(), b["time_cost"].get<double>());
   EXPECT_LT(a["time_cost"].get<double>(), 10.0);
-  EXPECT_LE(std::abs(a["delta_v_cost"].get<double>()), std::abs(b["delta_v_cost"].get<double>()));
+  const double twin_delta_v = a["unconstrained"]["total_delta_v"].get<double>();
+  EXPECT_LE(std::abs(a["delta_v_cost"].get<double>()), 0.005 * twin_delta_v);
+  EXPECT_LE(std::abs(b["delta_v_cost"].get<double>()), 0.005 * twin_delta_v);
   EXPECT_TRUE(a["constraints_satisfied"].get<bool>());
   EXPECT_TRUE(b["constraints_satisfied"].get<bool>());
 }

@@ -109,11 +109,12 @@ TEST(WaypointRun, OneDegreeEngineMisalignmentStillReachesEveryWaypoint) {
   std::printf("[ measured ] 1 deg misalignment: %.1f s, delta-v %.2f m/s, %zu transitions\n",
               res.total_time, delta_v, res.transitions.size());
 
-  // The same engine with the brake mode off (Algorithm 1 as printed): the mission fails.
+  // The same engine with the brake mode and the lateral RCT off (Algorithm 1 as printed): the
+  // mission fails.
   const sim::WaypointScenario printed = scenario::parse_waypoint(scenario::parse_document(
       fine_doc_with({{"max_wheel_torque = 5.0", axis.str()},
                      {"duration = 6000.0", "duration = 15000.0"},
-                     {"replan_distance = 50.0", "replan_distance = 50.0\nbrake_speed = 0.0"}}),
+                     {"replan_distance = 50.0", "replan_distance = 50.0\nbrake_speed = 0.0\nlateral_rct = false"}}),
       "printed.toml"));
   EXPECT_FALSE(simulate_waypoint(printed).completed);
 }
@@ -256,6 +257,49 @@ TEST(WaypointRun, OutcomeIsCompletedOrIncompleteWithTheReasonAndWhatIsLeft) {
   const WaypointSimResult away = simulate_waypoint(sc);
   EXPECT_NE(waypoint_outcome(sc, away).reason.find("moving away"), std::string::npos)
       << waypoint_outcome(sc, away).reason;
+}
+
+/// Time from the last hand-over to fine control until the end of the run [s].
+double last_fine_phase(const WaypointSimResult& res) {
+  double start = res.total_time;
+  for (const auto& tr : res.transitions) {
+    if (tr.to == guidance::Mode::fine) start = tr.t;
+  }
+  return res.total_time - start;
+}
+
+// Issue 42, item 1: braking against v stops the craft on the line it flies, which misses the
+// waypoint by the speed across the line of sight left from the start's drift (here 0.4 m/s on an
+// 11 km leg: a 200 m miss). With the RCT nulling that speed while the main engine flies the leg
+// (docs/waypoint.md, "Lateral RCT") the last fine phase is short; without them it is long.
+TEST(WaypointRun, LateralRctPutTheBrakingOnTheWaypoint) {
+  const sim::WaypointScenario sc = load("tests/data/waypoint/lateral_drift_large_craft.toml");
+  ASSERT_TRUE(sc.mission.lateral_rct);
+  const WaypointSimResult res = simulate_waypoint(sc);
+  ASSERT_TRUE(res.completed) << waypoint_outcome(sc, res).reason;
+  sim::WaypointScenario off = sc;
+  off.mission.lateral_rct = false;
+  const WaypointSimResult res_off = simulate_waypoint(off);
+  ASSERT_TRUE(res_off.completed) << waypoint_outcome(off, res_off).reason;
+  std::printf("[ measured ] last fine phase %.1f s of %.1f s (lateral RCT), %.1f s of %.1f s (without)\n",
+              last_fine_phase(res), res.total_time, last_fine_phase(res_off), res_off.total_time);
+  EXPECT_LT(last_fine_phase(res), 0.05 * res.total_time);
+  EXPECT_GT(last_fine_phase(res_off), 4.0 * last_fine_phase(res));
+  EXPECT_LT(res.total_time, res_off.total_time);
+}
+
+// Issue 42: crafts beyond the class generator, each given 1.5 x the tool's own prediction.
+TEST(WaypointRun, AStationClassTugAndAOneKilogramCubeSatCompleteWithinOneAndAHalfPredictions) {
+  for (const char* file : {"tests/data/waypoint/station_tug_100t.toml", "tests/data/waypoint/cubesat_1kg.toml"}) {
+    sim::WaypointScenario sc = load(file);
+    const double predicted = predict_waypoint_mission(sc).time;
+    sc.duration = 1.5 * predicted;
+    const WaypointSimResult res = simulate_waypoint(sc);
+    ASSERT_TRUE(res.finite) << file;
+    EXPECT_TRUE(res.completed) << file << ": " << waypoint_outcome(sc, res).reason;
+    std::printf("[ measured ] %s: %.1f s, predicted %.1f s (%.3f)\n", file, res.total_time, predicted,
+                res.total_time / predicted);
+  }
 }
 
 TEST(WaypointRun, BrakingAlongTheVelocityBeatsTheNormOfTheError) {

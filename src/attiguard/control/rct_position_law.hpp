@@ -41,4 +41,19 @@ struct RctPositionGains {
   return mass * (R_ib.transpose() * (position_gain * e_i - g.kappa_d * v_i));
 }
 
+/// A damping of the speed across the line of sight like [Waypoint eq. (28)]'s,
+/// f^b = −m k R_i^b (I − êêᵀ) v^i with ê = e^i/‖e^i‖: the RCT null that speed while the main
+/// engine flies the leg (beyond the paper; docs/waypoint.md, "Lateral RCT"), so that the engine's
+/// line passes through the waypoint. The guidance uses the dead-beat gain k = 1/T_s: on/off
+/// thrusters then fire while ‖v_⊥‖ exceeds half a pulse, a_rct T_s/2. Zero when e^i = 0.
+/// Allocation-free.
+[[nodiscard]] inline lie::Vec3 rct_lateral_force(double mass, const lie::Mat3& R_ib, const lie::Vec3& e_i,
+                                                 const lie::Vec3& v_i, double gain) noexcept {
+  const double d = e_i.norm();
+  if (!(d > 0.0)) return lie::Vec3::Zero();
+  const lie::Vec3 u = e_i / d;
+  const lie::Vec3 v_lat = v_i - u * u.dot(v_i);
+  return -mass * gain * (R_ib.transpose() * v_lat);
+}
+
 }  // namespace attiguard::control

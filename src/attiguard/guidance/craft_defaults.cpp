@@ -24,7 +24,7 @@ double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexce
 }
 
 double craft_projection_blend_speed(const CraftLimits& c) noexcept {
-  return std::max(0.05, 2.5 * c.a_main() * c.control_period);
+  return 2.5 * c.a_main() * c.control_period;
 }
 
 double rct_stopping_distance(const CraftLimits& c, double speed) noexcept {

@@ -40,9 +40,11 @@ struct CraftLimits {
 /// on/off engine; the paper's 0.02 m/s), at most half the cruise speed [m/s].
 [[nodiscard]] double craft_main_cutoff_speed(const CraftLimits& c, double cruise_speed) noexcept;
 
-/// Speed below which the velocity projection [Waypoint eqs. (17)-(22)] fades out: max(0.05, 2.5 a T_s) [m/s]
-/// (the paper example's 0.05 m/s; above it, one period of thrust turns v̂ by less than ≈ 0.4 rad,
-/// so x_d = −v̂ does not spin).
+/// Speed below which the velocity projection [Waypoint eqs. (17)-(22)] fades out: 2.5 a T_s [m/s]
+/// (above it, one period of thrust turns v̂ by less than ≈ 0.4 rad, so x_d = −v̂ does not spin).
+/// The paper's 0.05 m/s is the paper profile's; as a floor it left a slow craft (cruise speeds of
+/// centimetres per second) braking with the projection faded, pointed at a line of sight that
+/// swings near the waypoint (docs/waypoint.md, "Lateral RCT").
 [[nodiscard]] double craft_projection_blend_speed(const CraftLimits& c) noexcept;
 
 /// Distance the RCT need to stop from `speed` at half their authority (the bang-bang threshold

@@ -320,6 +320,18 @@ void set_fine_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e
   cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
 }
 
+/// The RCT's lateral nulling while the main engine flies the leg (control::rct_lateral_force with
+/// the dead-beat gain 1/T_s), allocated to the six thrusters as fine control's force, while the line the craft flies misses
+/// the waypoint by more than the arrival radius (docs/waypoint.md, "Lateral RCT"): within it the
+/// thrusters stay off, so that they do not turn v̂ under the braking engine.
+void set_lateral_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
+                     MissionCommand& cmd) noexcept {
+  if (miss_distance(e_i, in.v_i) <= p.arrival_radius) return;
+  const Vec3 f_b = control::rct_lateral_force(p.mass, in.R_ib, e_i, in.v_i, 1.0 / in.dt);
+  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);
+  cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
+}
+
 /// A sampled loop cannot follow a frame turning by more than half a radian per period (the
 /// velocity direction of a craft whose thrust quantum a T_s is comparable to its speed, ê next
 /// to the waypoint): the PID gets the feed-forward ω_d capped at 0.5/T_s.
@@ -392,6 +404,11 @@ MissionCommand WaypointSequencer::step(const MissionInputs& in) noexcept {
   cmd.inputs.thrust = thrust;
   if (mode_ == Mode::fine) {
     set_fine_rct(params_, in, e_i, cmd);
+  } else if (params_.lateral_rct && (mode_ == Mode::align || mode_ == Mode::accelerate ||
+                                     mode_ == Mode::coast || mode_ == Mode::flip)) {
+    // Not while decelerating or braking: each RCT pulse turns v̂, which the engine's pointing
+    // (x_d = −v̂, within the pointing tolerance) would have to chase.
+    set_lateral_rct(params_, in, e_i, cmd);
   }
   // (e) feed-forward with the acceleration the commands will produce, then the PID [Waypoint eq. (27)] with
   // the feed-forward capped (cmd.omega_d_d stays exact).

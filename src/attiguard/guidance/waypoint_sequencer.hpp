@@ -10,6 +10,7 @@
 /// allocation-free: the waypoints are a non-owning span and the caller records transitions.
 
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "attiguard/control/quaternion_pid.hpp"
@@ -95,6 +96,10 @@ struct MissionParams {
   /// √(replan_distance · f_max/m), the speed the RCT stop within half the re-plan distance.
   double brake_speed{0.0};
   bool velocity_projection{true};     ///< [Waypoint eqs. (17)-(22)] while flipping/decelerating
+  /// RCT null the speed across the line of sight in align, accelerate, coast and flip while
+  /// the miss distance exceeds the arrival radius (control::rct_lateral_force;
+  /// beyond the paper; docs/waypoint.md, "Lateral RCT")
+  bool lateral_rct{false};
   VelocityProjectionParams projection{};
   FlipTiming flip_timing{FlipTiming::immediate};
   double flip_lead_time{60.0};        ///< [s], FlipTiming::braking_point only
@@ -115,6 +120,17 @@ struct MissionParams {
 [[nodiscard]] inline double closing_speed(const Vec3& e_i, const Vec3& v_i) noexcept {
   const double d = e_i.norm();
   return d > 0.0 ? e_i.dot(v_i) / d : 0.0;
+}
+
+/// Miss distance of the straight line the craft flies, ‖v_⊥‖ ‖e‖/‖v‖ = ‖e‖ sin ∠(e, v) with v_⊥
+/// the velocity across the line of sight, while closing (ê·v > 0): the distance at the closest
+/// approach; +∞ when not closing, 0 at e = 0 [m] (docs/waypoint.md, "Lateral RCT").
+[[nodiscard]] inline double miss_distance(const Vec3& e_i, const Vec3& v_i) noexcept {
+  const double d = e_i.norm();
+  if (!(d > 0.0)) return 0.0;
+  const double closing = e_i.dot(v_i) / d;
+  if (!(closing > 0.0)) return std::numeric_limits<double>::infinity();
+  return (v_i - e_i * (closing / d)).norm() * d / v_i.norm();
 }
 
 /// Predicted stopping distance at the closing speed v_c with the braking margin γ of [Waypoint eq. (16)]:

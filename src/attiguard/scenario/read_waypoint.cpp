@@ -150,7 +150,7 @@ void read_waypoint_attitude_control(const TableReader& root, bool paper,
 /// [guidance]: declares its keys and reads the required ones (cruise speed and accuracies).
 void read_waypoint_guidance_required(const TableReader& g, guidance::MissionParams& mp) {
   declare(g, {"profile", "cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
-              "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance",
+              "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance", "lateral_rct",
               "main_cutoff_speed", "replan_distance", "brake_speed",
               "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
               "flip_timing", "flip_lead_time"});
@@ -212,6 +212,7 @@ void read_waypoint_guidance_options(const TableReader& g, bool paper, const guid
   mp.brake_speed =
       g.number_or("brake_speed", DerivedDefault{guidance::default_brake_speed(mp)}, NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
+  mp.lateral_rct = g.boolean_or("lateral_rct", !paper);
   mp.projection.blend_speed = g.number_or(
       "projection_blend_speed", DerivedDefault{paper ? 0.05 : guidance::craft_projection_blend_speed(limits)},
       NumberRule::positive());

@@ -70,6 +70,46 @@ static void BM_DenseSdpPaperStep0(benchmark::State& state) {
 }
 BENCHMARK(BM_DenseSdpPaperStep0)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
+// The bare solve of BM_DenseSdpPaperStep0's SDP (12 variables, 4 blocks 3×3 + 8 blocks 6×6),
+// built once by metric_problem: the dense solver (solve_sdp_dense, issue 48; docs/reach.md,
+// "Dense SDP solver") and CSDP (solve_sdp with the dense path off), no certification.
+namespace {
+const ar::LmiProblem& paper_step0_problem() {
+  static const ar::LmiProblem prob = [] {
+    const ar::Box3 U0{ar::Vec3(0.442, 0.398, 0.361), ar::Vec3(0.750, 0.640, 0.710)};
+    const ar::LmiEnclosure enc = paper_loop().lmi_enclosure({}, U0);
+    const ar::StateMetric prev{ar::Mat3::Identity(), ar::Mat3::Zero(), ar::Mat3::Identity()};
+    return ar::metric_problem(enc, prev, 0.1871, ar::MetricObjective::max_trace_q, {});
+  }();
+  return prob;
+}
+}  // namespace
+
+static void BM_DenseSdpSolveOnly(benchmark::State& state) {
+  const ar::LmiProblem& prob = paper_step0_problem();
+  int iterations = 0;
+  for (auto _ : state) {
+    ar::DenseSdpSolver solver(prob);
+    const ar::SdpResult res = solver.solve(1e-7);
+    iterations = solver.info().iterations;
+    benchmark::DoNotOptimize(res.objective);
+  }
+  state.counters["iterations"] = iterations;
+}
+BENCHMARK(BM_DenseSdpSolveOnly)->Unit(benchmark::kMicrosecond);
+
+static void BM_CsdpSolveOnly(benchmark::State& state) {
+  const ar::LmiProblem& prob = paper_step0_problem();
+  const bool was = ar::dense_sdp_enabled();
+  ar::set_dense_sdp_enabled(false);
+  for (auto _ : state) {
+    const ar::SdpResult res = ar::solve_sdp(prob, {}, 1e-7);
+    benchmark::DoNotOptimize(res.objective);
+  }
+  ar::set_dense_sdp_enabled(was);
+}
+BENCHMARK(BM_CsdpSolveOnly)->Unit(benchmark::kMicrosecond);
+
 static void BM_SoundnessPaper10k(benchmark::State& state) {
   const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});
   ar::SoundnessSettings s;

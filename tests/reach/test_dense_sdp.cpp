@@ -153,7 +153,7 @@ TEST(DenseSdp, AgreesWithCsdpOnRandomFeasibleInstances) {
       c = ar::solve_sdp(p, {}, 1e-6);  // CSDP's y is feasible to about 1e-8, not 1e-9
     }
     ASSERT_EQ(c.status, ar::SdpStatus::solved) << "instance " << n << ": " << c.message;
-    if (d.status != ar::SdpStatus::solved) {  // solve_sdp falls back to CSDP (9 of 10⁴)
+    if (d.status != ar::SdpStatus::solved) {  // solve_sdp falls back to CSDP (6 of 10⁴)
       std::cout << "instance " << n << " not solved dense: " << d.message << "\n";
       continue;
     }

@@ -395,8 +395,8 @@ void set_sdp_objective(LmiProblem& prob, const SdpLayout& l) {
 
 }  // namespace
 
-MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
-                            MetricObjective objective, const MetricSdpSettings& settings) {
+LmiProblem metric_problem(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                          MetricObjective objective, const MetricSdpSettings& settings) {
   const SdpLayout l = sdp_layout(enc, objective, settings.coupled);
   LmiProblem prob(l.nvar);
   if (!settings.coupled) {
@@ -406,6 +406,13 @@ MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, do
   }
   add_contraction_lmis(prob, enc, c, settings, l);
   set_sdp_objective(prob, l);
+  return prob;
+}
+
+MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                            MetricObjective objective, const MetricSdpSettings& settings) {
+  const SdpLayout l = sdp_layout(enc, objective, settings.coupled);
+  const LmiProblem prob = metric_problem(enc, prev, c, objective, settings);
 
   const SdpResult res = solve_sdp(prob, settings.sdp, 1e-7);
   if (res.status != SdpStatus::solved) {

@@ -95,6 +95,12 @@ struct MetricSolution {
                                           const Mat3& P_prev, double c, MetricObjective objective,
                                           const MetricSdpSettings& settings);
 
+/// The SDP [ConReach eq. (20)] that solve_metric hands to solve_sdp, uncertified (for benchmarks
+/// and tests of the SDP solvers alone; docs/reach.md, "Dense SDP solver").
+[[nodiscard]] LmiProblem metric_problem(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                                        MetricObjective objective,
+                                        const MetricSdpSettings& settings);
+
 /// The always-feasible fallback: Q = P = s I, S = 0, with s = λ_min(M_prev) at
 /// c = identity_metric_rate(enc) (plus a certification margin); proved in interval arithmetic
 /// when `rigorous` (the product-metric overload always proves).

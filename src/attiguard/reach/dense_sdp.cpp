@@ -8,10 +8,13 @@
 //     R  = σμ S⁻¹ − X Rd S⁻¹ − G,   M dy = −b + A(R),
 //     dS = Rd + A*(dy),             dX = sym(σμ S⁻¹ − G − X dS S⁻¹) − X,
 // which solves A(dX) = rp, dS − A*(dy) = Rd and the linearised X S = σμ I (HKM: X dS S⁻¹
-// symmetrised). Mehrotra: the predictor (σ = 0) gives the affine steps and μ_aff, then
+// symmetrised). With X = L_X L_Xᵀ and S = L_S L_Sᵀ (factored once per iteration), S⁻¹ = Wᵀ W for
+// W = L_S⁻¹ and M_ij = ⟨G_i, G_j⟩ with G_i = W F_i L_X: M is the Gram matrix of the G_i.
+// Mehrotra: the predictor (σ = 0) gives the affine steps and μ_aff, then
 // σ = (μ_aff/μ)^e with SDPT3's e = max(1, 3 min(αp, αd)²), and the corrector reuses the
-// factorisation of M. Steps: γ times the distance to the boundary (eigenvalues of
-// L⁻¹ dX L⁻ᵀ with X = L Lᵀ), γ = 0.9 + 0.09 min(αp_aff, αd_aff), capped at 1.
+// factorisation of M. Steps: γ times the distance to the boundary, γ = 0.9 + 0.09 min(αp_aff,
+// αd_aff), capped at 1: starting from the cap (1, or 1/γ for the corrector), a block whose
+// X + α dX passes a Cholesky test keeps α; only the others compute −1/λ_min(L⁻¹ dX L⁻ᵀ).
 
 #include "attiguard/reach/dense_sdp.hpp"
 
@@ -46,6 +49,18 @@ double dense_sdp_inner(const TermT& t, const Eigen::MatrixXd& V) {
     s += t.values[e] * V(t.rows[e], t.cols[e]);
   }
   return s;
+}
+
+/// M += a F for a term, entry by entry when it is sparse.
+template <class TermT>
+void dense_sdp_axpy(const TermT& t, double a, Eigen::MatrixXd& M) {
+  if (!t.sparse) {
+    M += a * t.F;
+    return;
+  }
+  for (std::size_t e = 0; e < t.values.size(); ++e) {
+    M(t.rows[e], t.cols[e]) += a * t.values[e];
+  }
 }
 
 /// λ_min of the symmetric N×N matrix T, by Eigen's fixed-size solver (several times faster than
@@ -94,11 +109,16 @@ DenseSdpSolver::DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings
       k.terms.push_back(std::move(t));
     }
     for (Eigen::MatrixXd* W : {&k.X, &k.S, &k.Sinv, &k.Rd, &k.dX, &k.dS, &k.dXa, &k.dSa, &k.G,
-                               &k.R, &k.T, &k.U}) {
+                               &k.R, &k.T, &k.U, &k.LX, &k.W}) {
       W->setZero(s, s);
     }
+    const auto nt = static_cast<Eigen::Index>(k.terms.size());
+    k.Gs.setZero(static_cast<Eigen::Index>(s) * s, nt);
+    k.Mb.setZero(nt, nt);
     k.I.setIdentity(s, s);
-    k.chol = Eigen::LLT<Eigen::MatrixXd>(s);
+    for (Eigen::LLT<Eigen::MatrixXd>* f : {&k.lx, &k.ls, &k.chol}) {
+      *f = Eigen::LLT<Eigen::MatrixXd>(s);
+    }
     k.eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s);
     blocks_.push_back(std::move(k));
   }
@@ -146,22 +166,26 @@ void DenseSdpSolver::initial_point() {
   }
 }
 
-/// Cholesky of every S (false when one is not positive definite), S⁻¹, Rd, rp and the measures.
+/// Cholesky of every X and S (false when one is not positive definite), L_X, W = L_S⁻¹,
+/// S⁻¹ = Wᵀ W, Rd, rp and the measures.
 bool DenseSdpSolver::factor_and_residuals() {
   rp_ = b_;
   double xs = 0.0;
   double f0x = 0.0;
   double rd2 = 0.0;
   for (Block& k : blocks_) {
-    k.chol.compute(k.S);
-    if (k.chol.info() != Eigen::Success) {
+    k.ls.compute(k.S);
+    k.lx.compute(k.X);
+    if (k.ls.info() != Eigen::Success || k.lx.info() != Eigen::Success) {
       return false;
     }
-    k.Sinv = k.I;
-    k.chol.solveInPlace(k.Sinv);
+    k.LX = k.lx.matrixL();
+    k.W = k.I;
+    k.ls.matrixL().solveInPlace(k.W);
+    k.Sinv.noalias() = k.W.transpose().lazyProduct(k.W);
     k.Rd = k.F0 - k.S;
     for (const Term& t : k.terms) {
-      k.Rd += y_(t.var) * t.F;
+      dense_sdp_axpy(t, y_(t.var), k.Rd);
       rp_(t.var) -= dense_sdp_inner(t, k.X);
     }
     xs += k.X.cwiseProduct(k.S).sum();
@@ -186,26 +210,39 @@ bool DenseSdpSolver::converged(double tol) const noexcept {
          info_.dual_infeasibility <= tol;
 }
 
-/// Adds block k's part of M_ij = ⟨F_i, X F_j S⁻¹⟩ (lower triangle, i ≥ j by term order).
+/// Adds block k's part of M_ij = ⟨F_i, X F_j S⁻¹⟩ = ⟨G_i, G_j⟩, G_i = W F_i L_X (header
+/// comment), to the lower triangle of M.
 void DenseSdpSolver::schur_block(Block& k) {
+  const int s = k.size;
   const int nt = static_cast<int>(k.terms.size());
-  for (int j = 0; j < nt; ++j) {
-    const Term& tj = k.terms[static_cast<std::size_t>(j)];
-    if (tj.sparse) {  // X F_j S⁻¹ = Σ f (X e_r)(e_cᵀ S⁻¹)
-      k.T.setZero();
-      for (std::size_t e = 0; e < tj.values.size(); ++e) {
-        k.T.noalias() += tj.values[e] * k.X.col(tj.rows[e]) * k.Sinv.row(tj.cols[e]);
+  for (int i = 0; i < nt; ++i) {
+    const Term& t = k.terms[static_cast<std::size_t>(i)];
+    Eigen::Map<Eigen::MatrixXd> G(k.Gs.col(i).data(), s, s);
+    if (t.sparse) {  // W F L_X = Σ f (W e_r)(e_cᵀ L_X), W and L_X lower triangular
+      G.setZero();
+      for (std::size_t e = 0; e < t.values.size(); ++e) {
+        const int r = t.rows[e];
+        const int c = t.cols[e];
+        for (int q = 0; q <= c; ++q) {
+          const double f = t.values[e] * k.LX(c, q);
+          for (int p = r; p < s; ++p) {
+            G(p, q) += f * k.W(p, r);
+          }
+        }
       }
     } else {
-      k.U.noalias() = k.X.lazyProduct(tj.F);
-      k.T.noalias() = k.U.lazyProduct(k.Sinv);
+      k.U.noalias() = t.F.lazyProduct(k.LX);
+      G.noalias() = k.W.lazyProduct(k.U);
     }
+  }
+  k.Mb.triangularView<Eigen::Lower>() = k.Gs.transpose().lazyProduct(k.Gs);
+  for (int j = 0; j < nt; ++j) {
+    const int vj = k.terms[static_cast<std::size_t>(j)].var;
     for (int i = 0; i < nt; ++i) {
-      const Term& ti = k.terms[static_cast<std::size_t>(i)];
-      if (ti.var < tj.var) {
-        continue;  // the upper triangle is the lower one's mirror
+      const int vi = k.terms[static_cast<std::size_t>(i)].var;
+      if (vi >= vj) {  // the upper triangle is the lower one's mirror
+        M_(vi, vj) += k.Mb(std::max(i, j), std::min(i, j));
       }
-      M_(ti.var, tj.var) += dense_sdp_inner(ti, k.T);
     }
   }
 }
@@ -243,7 +280,7 @@ void DenseSdpSolver::direction(double target, bool corrector) {
       k.R -= k.G;
     }
     for (const Term& t : k.terms) {
-      h_(t.var) += t.F.cwiseProduct(k.R).sum();
+      h_(t.var) += dense_sdp_inner(t, k.R);
     }
   }
   dy_ = h_;
@@ -251,7 +288,7 @@ void DenseSdpSolver::direction(double target, bool corrector) {
   for (Block& k : blocks_) {
     k.dS = k.Rd;
     for (const Term& t : k.terms) {
-      k.dS += dy_(t.var) * t.F;
+      dense_sdp_axpy(t, dy_(t.var), k.dS);
     }
     k.U.noalias() = k.X.lazyProduct(k.dS);
     k.T.noalias() = k.U.lazyProduct(k.Sinv);
@@ -264,17 +301,14 @@ void DenseSdpSolver::direction(double target, bool corrector) {
   }
 }
 
-/// Largest α with V + α D ⪰ 0 (infinity when D ⪰ 0): −1/λ_min(L⁻¹ D L⁻ᵀ), V = L Lᵀ; 0 when V is
-/// not positive definite.
-double DenseSdpSolver::block_step(Block& k, const Eigen::MatrixXd& V, const Eigen::MatrixXd& D) {
-  k.chol.compute(V);
-  if (k.chol.info() != Eigen::Success) {
-    return 0.0;
-  }
+/// Largest α with V + α D ⪰ 0 (infinity when D ⪰ 0): −1/λ_min(L⁻¹ D L⁻ᵀ), f the Cholesky
+/// factorisation V = L Lᵀ of the iteration.
+double DenseSdpSolver::block_step(Block& k, const Eigen::LLT<Eigen::MatrixXd>& f,
+                                  const Eigen::MatrixXd& D) {
   k.U = D;
-  k.chol.matrixL().solveInPlace(k.U);
+  f.matrixL().solveInPlace(k.U);
   k.T = k.U.transpose();
-  k.chol.matrixL().solveInPlace(k.T);
+  f.matrixL().solveInPlace(k.T);
   double lmin = 0.0;
   switch (k.size) {
     case 3: lmin = dense_sdp_min_eigenvalue<3>(k.T); break;
@@ -287,10 +321,20 @@ double DenseSdpSolver::block_step(Block& k, const Eigen::MatrixXd& V, const Eige
   return lmin < 0.0 ? -1.0 / lmin : std::numeric_limits<double>::infinity();
 }
 
-double DenseSdpSolver::max_step(bool primal) {
-  double a = std::numeric_limits<double>::infinity();
+/// min(cap, largest α with X + α dX ⪰ 0) (primal) or the same for S + α dS: a block whose
+/// V + α D passes a Cholesky test at the current α keeps it; only the others need λ_min.
+double DenseSdpSolver::max_step(bool primal, double cap) {
+  double a = cap;
   for (Block& k : blocks_) {
-    a = std::min(a, primal ? block_step(k, k.X, k.dX) : block_step(k, k.S, k.dS));
+    const Eigen::MatrixXd& V = primal ? k.X : k.S;
+    const Eigen::MatrixXd& D = primal ? k.dX : k.dS;
+    k.T = V;
+    k.T += a * D;
+    k.chol.compute(k.T);
+    if (k.chol.info() == Eigen::Success) {
+      continue;
+    }
+    a = std::min(a, block_step(k, primal ? k.lx : k.ls, D));
   }
   return a;
 }
@@ -343,8 +387,8 @@ SdpResult DenseSdpSolver::solve(double recheck_tol) {
     if (xmax > big || !form_schur()) break;
     const double mu = xs / n_;
     direction(0.0, false);
-    const double ap_aff = std::min(1.0, max_step(true));
-    const double ad_aff = std::min(1.0, max_step(false));
+    const double ap_aff = max_step(true, 1.0);
+    const double ad_aff = max_step(false, 1.0);
     const double mu_aff = affine_mu(ap_aff, ad_aff);
     const double expo = std::max(1.0, 3.0 * std::pow(std::min(ap_aff, ad_aff), 2));
     const double sigma = std::clamp(std::pow(std::max(mu_aff, 0.0) / mu, expo), 0.0, 1.0);
@@ -354,8 +398,8 @@ SdpResult DenseSdpSolver::solve(double recheck_tol) {
     }
     direction(sigma * mu, true);
     const double gamma = 0.9 + 0.09 * std::min(ap_aff, ad_aff);
-    const double ap = std::min(1.0, gamma * max_step(true));
-    const double ad = std::min(1.0, gamma * max_step(false));
+    const double ap = std::min(1.0, gamma * max_step(true, 1.0 / gamma));
+    const double ad = std::min(1.0, gamma * max_step(false, 1.0 / gamma));
     if (!(ap > 1e-10) && !(ad > 1e-10)) break;
     update(ap, ad);
   }

@@ -15,11 +15,12 @@
 ///
 /// Method: infeasible-start path following with the HKM search direction (Helmberg, Rendl,
 /// Vanderbei and Wolkowicz 1996; Kojima, Shindoh and Hara 1997; Monteiro 1997) and Mehrotra's
-/// predictor–corrector, step lengths to the boundary by eigenvalues and the adaptive centring
-/// exponent of SDPT3 (Todd, Toh and Tütüncü 1998; Toh, Todd and Tütüncü 1999). The m×m Schur
-/// complement M_ij = ⟨F_i, X F_j S⁻¹⟩ is formed densely (sparse F_i entry by entry) and factored
-/// by Eigen's LLT. Every matrix of the iteration lives in the solver object: the loop allocates
-/// nothing.
+/// predictor–corrector, step lengths to the boundary (a Cholesky test per block, eigenvalues only
+/// for the blocks that fail it) and the adaptive centring exponent of SDPT3 (Todd, Toh and Tütüncü
+/// 1998; Toh, Todd and Tütüncü 1999). The m×m Schur complement M_ij = ⟨F_i, X F_j S⁻¹⟩ is formed
+/// as the Gram matrix of G_i = L_S⁻¹ F_i L_X (X = L_X L_Xᵀ, S = L_S L_Sᵀ; sparse F_i entry by
+/// entry) and factored by Eigen's LLT. Every matrix of the iteration lives in the solver object:
+/// the loop allocates nothing.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -80,7 +81,11 @@ class DenseSdpSolver {
     Eigen::MatrixXd F0;
     std::vector<Term> terms;
     Eigen::MatrixXd X, S, Sinv, Rd, dX, dS, dXa, dSa, G, R, T, U, I;
-    Eigen::LLT<Eigen::MatrixXd> chol;
+    Eigen::MatrixXd LX;  ///< the Cholesky factor L_X, upper triangle zero
+    Eigen::MatrixXd W;   ///< L_S⁻¹ (S⁻¹ = Wᵀ W)
+    Eigen::MatrixXd Gs;  ///< column i: G_i = W F_i L_X, s² × terms
+    Eigen::MatrixXd Mb;  ///< Gsᵀ Gs, the block's part of the Schur complement
+    Eigen::LLT<Eigen::MatrixXd> lx, ls, chol;  ///< X, S (once per iteration), step tests
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
   };
 
@@ -91,8 +96,9 @@ class DenseSdpSolver {
   bool form_schur();
   void schur_block(Block& k);
   void direction(double target, bool corrector);
-  double max_step(bool primal);
-  double block_step(Block& k, const Eigen::MatrixXd& V, const Eigen::MatrixXd& D);
+  double max_step(bool primal, double cap);
+  static double block_step(Block& k, const Eigen::LLT<Eigen::MatrixXd>& f,
+                           const Eigen::MatrixXd& D);
   double affine_mu(double ap, double ad) const;
   void update(double ap, double ad);
   SdpResult finish(bool ok, double recheck_tol) const;

@@ -311,25 +311,27 @@ double main_engine_thrust(const MissionParams& p, Mode mode, const Vec3& e_i, co
   return 0.0;
 }
 
-/// Fine control's RCT command [Waypoint eq. (28)]-(30): the position force allocated to the six
-/// thrusters, bang-bang, and their resulting body force.
-void set_fine_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
-                  MissionCommand& cmd) noexcept {
-  const Vec3 f_b = control::rct_position_force(p.mass, in.R_ib, e_i, in.v_i, p.rct);
-  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);  // [Waypoint eqs. (28)-(30)]
+/// The body force f_b allocated to the six thrusters, bang-bang, and their resulting body force
+/// [Waypoint eqs. (29)-(30)].
+void fire_rct(const MissionParams& p, const Vec3& f_b, MissionCommand& cmd) noexcept {
+  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);
   cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
 }
 
+/// Fine control's RCT command [Waypoint eq. (28)]-(30): the position force, fired.
+void set_fine_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
+                  MissionCommand& cmd) noexcept {
+  fire_rct(p, control::rct_position_force(p.mass, in.R_ib, e_i, in.v_i, p.rct), cmd);  // [Waypoint eq. (28)]
+}
+
 /// The RCT's lateral nulling while the main engine flies the leg (control::rct_lateral_force with
-/// the dead-beat gain 1/T_s), allocated to the six thrusters as fine control's force, while the line the craft flies misses
-/// the waypoint by more than the arrival radius (docs/waypoint.md, "Lateral RCT"): within it the
+/// the dead-beat gain 1/T_s), fired as fine control's force, while the line the craft flies
+/// misses the waypoint by more than the arrival radius (docs/waypoint.md, "Lateral RCT"): within it the
 /// thrusters stay off, so that they do not turn v̂ under the braking engine.
 void set_lateral_rct(const MissionParams& p, const MissionInputs& in, const Vec3& e_i,
                      MissionCommand& cmd) noexcept {
   if (miss_distance(e_i, in.v_i) <= p.arrival_radius) return;
-  const Vec3 f_b = control::rct_lateral_force(p.mass, in.R_ib, e_i, in.v_i, 1.0 / in.dt);
-  cmd.rct = control::rct_bang_bang(control::rct_allocate(f_b), p.f_max, p.rct_threshold);
-  cmd.inputs.f_rct_b = control::rct_body_force(cmd.rct);
+  fire_rct(p, control::rct_lateral_force(p.mass, in.R_ib, e_i, in.v_i, 1.0 / in.dt), cmd);
 }
 
 /// A sampled loop cannot follow a frame turning by more than half a radian per period (the

@@ -393,11 +393,9 @@ void set_sdp_objective(LmiProblem& prob, const SdpLayout& l) {
   }
 }
 
-}  // namespace
-
-LmiProblem metric_problem(const LmiEnclosure& enc, const StateMetric& prev, double c,
-                          MetricObjective objective, const MetricSdpSettings& settings) {
-  const SdpLayout l = sdp_layout(enc, objective, settings.coupled);
+/// metric_problem on the layout `l` (= sdp_layout(enc, objective, settings.coupled)).
+LmiProblem metric_problem_on(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                             const MetricSdpSettings& settings, const SdpLayout& l) {
   LmiProblem prob(l.nvar);
   if (!settings.coupled) {
     add_product_bounds(prob, prev, settings, l);
@@ -409,10 +407,17 @@ LmiProblem metric_problem(const LmiEnclosure& enc, const StateMetric& prev, doub
   return prob;
 }
 
+}  // namespace
+
+LmiProblem metric_problem(const LmiEnclosure& enc, const StateMetric& prev, double c,
+                          MetricObjective objective, const MetricSdpSettings& settings) {
+  return metric_problem_on(enc, prev, c, settings, sdp_layout(enc, objective, settings.coupled));
+}
+
 MetricSolution solve_metric(const LmiEnclosure& enc, const StateMetric& prev, double c,
                             MetricObjective objective, const MetricSdpSettings& settings) {
   const SdpLayout l = sdp_layout(enc, objective, settings.coupled);
-  const LmiProblem prob = metric_problem(enc, prev, c, objective, settings);
+  const LmiProblem prob = metric_problem_on(enc, prev, c, settings, l);
 
   const SdpResult res = solve_sdp(prob, settings.sdp, 1e-7);
   if (res.status != SdpStatus::solved) {

@@ -342,6 +342,7 @@ TEST(WaypointScenario, RejectsUnreachableWaypointsAndBadParameters) {
   expect_input_error(doc_with("kappa_d = 5.0", "kappa_d = 0.0"), "kappa_d");
   expect_input_error(doc_with("output_interval = 1.0", "output_interval = 0.01"), "output_interval");
   expect_input_error(doc_with("cruise_speed = 100.0", "cruise_sped = 100.0"), "cruise_sped");
+  expect_input_error(doc_with("cruise_speed = 100.0", "cruise_speed = 100.0\nlateral_rct = 1"), "lateral_rct");
   // A main engine more than 10 deg from body x (here 26 deg).
   expect_input_error(doc_with("main_thrust = 20.0", "main_thrust = 20.0\nmain_thrust_axis_b = [0.9, 0.44, 0.0]"),
                      "main_thrust_axis_b");

@@ -288,9 +288,13 @@ TEST(WaypointRun, LateralRctPutTheBrakingOnTheWaypoint) {
   EXPECT_LT(res.total_time, res_off.total_time);
 }
 
-// Issue 42: crafts beyond the class generator, each given 1.5 x the tool's own prediction.
+// Issue 42: crafts beyond the class generator, each given 1.5 x the tool's own prediction (a
+// 100 t tug, a 1 kg and a 6U CubeSat with a reversal and a zero-length leg, a 400 t station on
+// two opposite collinear legs).
 TEST(WaypointRun, AStationClassTugAndAOneKilogramCubeSatCompleteWithinOneAndAHalfPredictions) {
-  for (const char* file : {"tests/data/waypoint/station_tug_100t.toml", "tests/data/waypoint/cubesat_1kg.toml"}) {
+  for (const char* file : {"tests/data/waypoint/station_tug_100t.toml", "tests/data/waypoint/cubesat_1kg.toml",
+                           "tests/data/waypoint/cubesat_6u_reversal.toml",
+                           "tests/data/waypoint/station_400t_collinear.toml"}) {
     sim::WaypointScenario sc = load(file);
     const double predicted = predict_waypoint_mission(sc).time;
     sc.duration = 1.5 * predicted;

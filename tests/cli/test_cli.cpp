@@ -322,13 +322,16 @@ TEST(CliContract, FailedRunWritesAPartialStatus) {
   EXPECT_FALSE(fs::exists(dir / "o/summary.json"));
 }
 
-// A reach analysis that fails numerically (the enclosure diverges) leaves reach.json.partial
-// with its status instead of nothing.
+// A reach analysis that fails numerically (the nominal itself overflows: ω̇ = 10³⁰⁰ ω) leaves
+// reach.json.partial with its status instead of nothing. (An enclosure that diverges is no longer
+// such a failure: it ends the cell's analysis with cannot_prove, docs/reach.md "Adaptive steps".)
 TEST(CliContract, FailedReachWritesAPartialReachJson) {
   const fs::path dir = scratch_dir();
-  std::string text = read_file(example("conreach_hold_too_large.toml"));
-  text.replace(text.find("attitude_radius = 0.08"), 22, "attitude_radius = 0.15");
-  text.replace(text.find("omega_radius = 0.08"), 19, "omega_radius = 0.15");
+  const std::string text =
+      "kind = \"reach\"\n[system]\nmodel = \"linear_omega\"\n"
+      "matrix = [[1e300, 0.0, 0.0], [0.0, 1e300, 0.0], [0.0, 0.0, 1e300]]\n"
+      "[initial]\nattitude_radius = 0.1\nomega_b = [0.65, 0.54, 0.61]\nomega_radius = 0.1\n"
+      "[reach]\nhorizon = 1.0\nsteps = 10\n[soundness]\nsamples = 0\n";
   write_file(dir / "wide.toml", text);
   const auto r = run_cli(dir, "reach wide.toml --out o");
   EXPECT_EQ(r.exit_code, 3) << r.err;
@@ -336,8 +339,7 @@ TEST(CliContract, FailedReachWritesAPartialReachJson) {
   EXPECT_FALSE(fs::exists(dir / "o/reach.json"));
   const std::string status = read_file(dir / "o/reach.json.partial");
   EXPECT_NE(status.find("\"status\": \"partial\""), std::string::npos) << status;
-  // The partial file records the same reason the error line gives (today: the balls outgrow
-  // one exp chart), with the exit code.
+  // The partial file records the same reason the error line gives, with the exit code.
   const auto j = nlohmann::json::parse(status);
   EXPECT_EQ(j["exit_code"].get<int>(), 3);
   const std::string reason = j["error"].get<std::string>();

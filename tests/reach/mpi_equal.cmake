@@ -24,12 +24,14 @@ run_expect(0 ${CLI} reach ${WORK_DIR}/threads1.toml --out ${WORK_DIR}/serial)
 run_expect(0 ${CLI} reach ${WORK_DIR}/threads2.toml --out ${WORK_DIR}/threads)
 run_expect(0 ${mpi} ${CLI} reach ${WORK_DIR}/threads1.toml --out ${WORK_DIR}/mpi)
 
-# reach.json without its wall-clock times (top level, soundness, each cell of "final").
+# reach.json without its wall-clock times (top level, soundness, adversarial, partition, each
+# cell of "final").
 function(read_without_times path out_var)
   file(READ ${path} j)
   string(JSON j REMOVE "${j}" wall_time_s)
   string(JSON j REMOVE "${j}" soundness wall_time_s)
   string(JSON j ERROR_VARIABLE no_adversarial REMOVE "${j}" adversarial wall_time_s)
+  string(JSON j ERROR_VARIABLE no_partition REMOVE "${j}" partition wall_time_s)
   string(JSON cells LENGTH "${j}" final)
   math(EXPR last "${cells} - 1")
   foreach(i RANGE ${last})

@@ -10,6 +10,7 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/reach/conreach.hpp"
+#include "attiguard/reach/safety.hpp"
 #include "attiguard/reach/contraction_sdp.hpp"
 #include "attiguard/reach/lmi_proof.hpp"
 #include "attiguard/reach/metrics.hpp"
@@ -183,8 +184,8 @@ TEST(ReachCoupledMetric, FloatRigourSkipsTheIntervalProofAndSaysSo) {
 
 TEST(ReachCoupledMetric, RigorousModeStopsAStepThatCannotBeProvedWithItsReason) {
   // P_0 with an eigenvalue 1e-14 hidden by a rotation: no metric below it can be certified
-  // (P ⪯ P_0 is lost in rounding), so in rigorous mode the first step fails as cannot-prove
-  // (VerificationFailure, exit 4) naming the step and the reason, instead of passing.
+  // (P ⪯ P_0 is lost in rounding), so in rigorous mode the analysis stops at the first step,
+  // naming the step and the reason (the verdict is then cannot_prove, exit 4), instead of passing.
   const ar::LinearOmegaLoop loop(ar::Vec3(-2, -1, -3).asDiagonal());
   ar::InitialSet init{ar::Mat3::Identity(), 0.1, ar::Vec3(0.65, 0.54, 0.61), 0.1};
   const ar::Mat3 V = exp(ar::Vec3(0.3, -0.5, 0.7));
@@ -193,12 +194,14 @@ TEST(ReachCoupledMetric, RigorousModeStopsAStepThatCannotBeProvedWithItsReason) 
   s.horizon = 0.2;
   s.steps = 2;
   s.rigour = ar::Rigour::rigorous;
-  try {
-    (void)ar::run_conreach(loop, init, s);
-    ADD_FAILURE() << "an unprovable step was accepted";
-  } catch (const attiguard::VerificationFailure& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("step 0 on [0, 0.1] s cannot be proved"), std::string::npos) << m;
-    EXPECT_NE(m.find("fallback Q = P = s I at the identity-metric rate: "), std::string::npos) << m;
-  }
+  const ar::ReachResult res = ar::run_conreach(loop, init, s);
+  EXPECT_FALSE(res.complete);
+  EXPECT_TRUE(res.steps.empty());
+  EXPECT_EQ(res.stop_time, 0.0);
+  const std::string& m = res.stop_reason;
+  EXPECT_NE(m.find("step 0 on [0, 0.1] s cannot be proved"), std::string::npos) << m;
+  EXPECT_NE(m.find("fallback Q = P = s I at the identity-metric rate: "), std::string::npos) << m;
+  const ar::SafetyVerdict v = ar::verify_safety({}, {res});
+  EXPECT_FALSE(v.proved);
+  EXPECT_FALSE(v.complete);
 }

@@ -73,7 +73,9 @@ TEST(HoldCertificate, CertificateExampleIsSafe) {
   std::filesystem::remove_all(out);
 }
 
-TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4) {
+// The example keeps its single ball (`split = false`): cannot_prove, exit 4. Without that line
+// the automatic splitting (docs/reach.md, "Automatic splitting") proves the same set safe.
+TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4AndTheSplittingProvesIt) {
   const auto out = attiguard::test::fresh_dir("hold_too_large_out");
   const auto scenario = attiguard::test::reach_example_for_this_build("conreach_hold_too_large.toml");
   const auto r = attiguard::test::run_cli("reach '" + scenario.string() + "' --out '" + out.string() + "'");
@@ -81,6 +83,23 @@ TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4) {
   EXPECT_NE(r.err.find("cannot be proved"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(attiguard::test::read_file(out / "reach.json"));
   EXPECT_EQ(j["verdict"], "cannot_prove");
+  EXPECT_EQ(j["cells"].get<long>(), 1);
+
+  std::string text = attiguard::test::read_file(kSource / scenario);
+  const std::size_t at = text.rfind("split = false");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 13, "split = true");
+  const auto split = out / "split.toml";
+  std::ofstream(split) << text;
+  const auto s = attiguard::test::run_cli("reach '" + split.string() + "' --out '" + (out / "s").string() + "'");
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto js = nlohmann::json::parse(attiguard::test::read_file(out / "s" / "reach.json"));
+  EXPECT_EQ(js["verdict"], "safe");
+  EXPECT_GT(js["cells"].get<long>(), 1);
+  EXPECT_GE(js["partition"]["cells_split"].get<long>(), 1);
+  EXPECT_EQ(js["partition"]["leaves_unproved"].get<long>(), 0);
+  EXPECT_EQ(js["soundness"]["inside"].get<long>(), js["soundness"]["samples"].get<long>());
+  EXPECT_LE(js["adversarial"]["worst_ratio"].get<double>(), 1.0);
   std::filesystem::remove_all(out);
 }
 
@@ -100,7 +119,7 @@ TEST(HoldCertificate, PartitionedSetIsSafeWhereOneBallCannotBeProved) {
 
   // The same set as one cell: the example without its [partition] table (its last table).
   std::string text = attiguard::test::read_file(kSource / scenario);
-  text = text.substr(0, text.find("[partition]"));
+  text = text.substr(0, text.find("[partition]")) + "[partition]\nsplit = false\n";
   const auto one = out / "one_ball.toml";
   std::ofstream(one) << text;
   const auto r1 = attiguard::test::run_cli("reach '" + one.string() + "' --out '" +
@@ -135,7 +154,7 @@ TEST(HoldCertificate, CoupledMetricProvesALargerSingleBallThanTheProductMetric) 
   EXPECT_LT(j["adversarial"]["worst_ratio"].get<double>(), 1.0);
   for (const auto& st : j["steps"]) EXPECT_EQ(st["rigour"], "rigorous");
   replace("[reach]\n", "[reach]\nmetric = \"product\"\n");
-  std::ofstream(twice) << text;
+  std::ofstream(twice) << text << "\n[partition]\nsplit = false\n";
   const auto p = attiguard::test::run_cli("reach '" + twice.string() + "' --out '" + (out / "p").string() + "'");
   EXPECT_EQ(p.exit_code, 4) << p.err;
   std::filesystem::remove_all(out);

@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -74,12 +79,31 @@ TEST(ReachCli, NanIsInvalidInput) {
   EXPECT_NE(r.err.find("rate_step"), std::string::npos) << r.err;
 }
 
-TEST(ReachCli, BallLeavingASingleChartIsANumericalFailure) {
+// Beyond one chart (docs/reach.md, "Representation"): balls that no single exp chart holds are
+// drawn ball by ball, each in its best chart or point by point, instead of refusing.
+TEST(ReachCli, BallsBeyondASingleChartAreDrawnInSeveralCharts) {
   const auto p = write_scenario("chart", paper_body("", "", 3.0, "0"));
-  const auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");
-  EXPECT_EQ(r.exit_code, 3) << r.err;
-  EXPECT_NE(r.err.find("chart"), std::string::npos) << r.err;
-  EXPECT_EQ(attiguard::test::count_lines(r.err), 1);
+  const auto out = p.parent_path() / "out";
+  const auto r = run_cli("reach '" + p.string() + "' --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
+  EXPECT_EQ(j["chart"].get<int>(), -1);
+  std::istringstream csv(read_file(out / "boundary.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::set<std::string> charts;
+  long rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream ls(line);
+    for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 7U) << line;
+    charts.insert(f[3]);
+    for (std::size_t k = 4; k < 7; ++k) EXPECT_LT(std::abs(std::stod(f[k])), 3.1416) << line;
+    ++rows;
+  }
+  EXPECT_GT(rows, 0);
+  EXPECT_GE(charts.size(), 2U);
 }
 
 TEST(ReachCli, UnprovableSafetyExitsWith4AfterWritingOutputs) {
@@ -137,9 +161,10 @@ TEST(ReachCli, SlowPdLoopIsVerifiedOver60SecondsWithTheCoupledMetric) {
   std::string text = read_file(std::filesystem::path(ATTIGUARD_SOURCE_DIR) / scenario);
   text.replace(text.find("[soundness]"), 0, "metric = \"product\"\n\n");
   const auto product = out / "product.toml";
-  std::ofstream(product) << text;
+  std::ofstream(product) << text << "\n[partition]\nsplit = false\n";
   const auto p = run_cli("reach '" + product.string() + "' --out '" + (out / "p").string() + "'");
-  EXPECT_EQ(p.exit_code, 3) << p.err;
+  EXPECT_EQ(p.exit_code, 4) << p.err;
+  EXPECT_NE(p.err.find("the analysis stopped at t = "), std::string::npos) << p.err;
   EXPECT_NE(p.err.find("no a priori enclosure"), std::string::npos) << p.err;
   std::filesystem::remove_all(out);
 }

@@ -9,15 +9,14 @@
 #include "attiguard/reach/contraction_sdp.hpp"
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/soundness.hpp"
+#include "reach/paper_example.hpp"
 
 namespace ar = attiguard::reach;
 
+using attiguard::test::paper_loop;
+using attiguard::test::paper_set;
+
 namespace {
-const ar::LinearOmegaLoop& paper_loop() {
-  static const ar::LinearOmegaLoop loop(ar::Vec3(-2, -1, -3).asDiagonal());
-  return loop;
-}
-ar::InitialSet paper_set() { return {ar::Mat3::Identity(), 0.1, ar::Vec3(0.65, 0.54, 0.61), 0.1}; }
 
 /// The exact ω tube over [t0, t1] of ω̇ = Jω from the ball B(ω0, 0.1) (all components stay
 /// positive, each decays monotonically): [e^{J_k t1}(ω0_k − 0.1), e^{J_k t0}(ω0_k + 0.1)].

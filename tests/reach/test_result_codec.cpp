@@ -49,6 +49,23 @@ TEST(ReachResultCodec, RoundTripKeepsEveryBit) {
   EXPECT_TRUE(same_bits(d.P0, r.P0));
   EXPECT_EQ(d.r0, r.r0);
   EXPECT_EQ(d.sdp_solves, r.sdp_solves);
+  EXPECT_EQ(d.complete, r.complete);
+  EXPECT_EQ(d.stop_time, r.stop_time);
+  EXPECT_EQ(d.stop_reason, r.stop_reason);
+  EXPECT_EQ(d.bisections, r.bisections);
+  EXPECT_EQ(d.retries, r.retries);
+  ar::ReachResult stopped = r;  // a cell that stopped early keeps its reason through the codec
+  stopped.complete = false;
+  stopped.stop_time = 0.25;
+  stopped.stop_reason = "ConReach tube: no a priori enclosure over [0.25, 0.3] s";
+  stopped.bisections = 3;
+  stopped.retries = 2;
+  const ar::ReachResult ds = ar::decode_result(ar::encode_result(stopped));
+  EXPECT_FALSE(ds.complete);
+  EXPECT_EQ(ds.stop_time, 0.25);
+  EXPECT_EQ(ds.stop_reason, stopped.stop_reason);
+  EXPECT_EQ(ds.bisections, 3);
+  EXPECT_EQ(ds.retries, 2);
   ASSERT_EQ(d.nominal.size(), r.nominal.size());
   for (std::size_t i = 0; i < r.nominal.size(); ++i) {
     EXPECT_EQ(d.nominal[i].t, r.nominal[i].t);

@@ -16,6 +16,7 @@
 #include "attiguard/lie/quaternion.hpp"
 #include "attiguard/parallel/parallel_for.hpp"
 #include "attiguard/reach/adversarial.hpp"
+#include "attiguard/reach/auto_split.hpp"
 #include "attiguard/reach/boundary.hpp"
 #include "attiguard/reach/geodesic.hpp"
 #include "attiguard/reach/metrics.hpp"
@@ -34,7 +35,8 @@ nlohmann::json mat_json(const Mat3& M) {
 }
 
 /// The exp chart in which every attitude ball of every cell fits best (smallest max of
-/// ‖Ψ_i(R_c)‖ + r/√λ_min(Q)); NumericalError when none holds them all.
+/// ‖Ψ_i(R_c)‖ + r/√λ_min(Q)); −1 when none holds them all: then each boundary point is given in
+/// its own best chart (docs/reach.md, "Representation").
 int choose_chart(const std::vector<ReachResult>& results) {
   double best = std::numeric_limits<double>::infinity();
   int chart = 0;
@@ -52,13 +54,7 @@ int choose_chart(const std::vector<ReachResult>& results) {
       chart = c;
     }
   }
-  if (!(best < std::numbers::pi - 1e-3)) {
-    std::ostringstream os;
-    os << "the attitude balls do not fit in a single exp chart (needs " << best
-       << " rad >= pi): partition the initial set or shorten the horizon";
-    throw NumericalError(os.str());
-  }
-  return chart;
+  return best < std::numbers::pi - 1e-3 ? chart : -1;
 }
 
 /// reach.json's record of one step of the first cell (docs/reach.md, "Outputs").
@@ -88,15 +84,57 @@ nlohmann::json step_json(const ReachStep& st, const SafetyVerdict& verdict) {
 nlohmann::json finals_json(const std::vector<ReachResult>& results) {
   nlohmann::json finals = nlohmann::json::array();
   for (const ReachResult& res : results) {
-    const ReachStep& last = res.steps.back();
-    finals.push_back({{"r", last.r}, {"attitude_radius", last.attitude_radius},
-                      {"omega_half_widths", io::json_array(last.omega_half_widths)},
-                      {"wall_time_s", res.wall_time_s}});
+    nlohmann::json f = {{"t", res.steps.empty() ? 0.0 : res.steps.back().t1},
+                        {"complete", res.complete},
+                        {"steps", res.steps.size()},
+                        {"wall_time_s", res.wall_time_s}};
+    if (!res.steps.empty()) {
+      const ReachStep& last = res.steps.back();
+      f["r"] = last.r;
+      f["attitude_radius"] = last.attitude_radius;
+      f["omega_half_widths"] = io::json_array(last.omega_half_widths);
+    }
+    if (!res.complete) f["stop_reason"] = res.stop_reason;
+    finals.push_back(f);
   }
   return finals;
 }
 
 /// reach.json without the chart and the soundness checks (docs/reach.md, "Outputs").
+/// What the splitting left unproved, for the verdict's reason (docs/reach.md, "Automatic
+/// splitting"): the leaves, why the unproved ones were not split further.
+std::string split_summary(const SplitReport& rep, std::size_t leaves) {
+  std::ostringstream os;
+  os << rep.leaves_unproved << " of " << leaves << " cells unproved after " << rep.cells_split << " splits";
+  if (rep.nominal_violations > 0) os << ", " << rep.nominal_violations << " whose own nominal violates the specification";
+  if (rep.stalled > 0) os << ", " << rep.stalled << " where smaller cells proved no further";
+  if (rep.budget_spent) os << ", work budget spent (" << rep.budget_reason << ")";
+  return os.str();
+}
+
+/// reach.json's "partition": the leaves, their depths and the work budget (auto_split.hpp).
+nlohmann::json partition_json(const ReachScenario& sc, const SplitOutcome& split) {
+  const SplitReport& rep = split.report;
+  nlohmann::json depths = nlohmann::json::array();
+  for (std::size_t c = 0; c < split.cells.size(); ++c) depths.push_back(split.depth[c]);
+  return {{"user_cells", static_cast<long>(std::pow(sc.attitude_cells, 3) * std::pow(sc.omega_cells, 3))},
+          {"split", sc.split.enabled},
+          {"leaves", split.cells.size()},
+          {"leaf_depth", depths},
+          {"rounds", rep.rounds},
+          {"cells_analysed", rep.cells_analysed},
+          {"cells_split", rep.cells_split},
+          {"max_depth", rep.max_depth},
+          {"leaves_unproved", rep.leaves_unproved},
+          {"nominal_violations", rep.nominal_violations},
+          {"stalled", rep.stalled},
+          {"cell_steps", rep.cell_steps},
+          {"wall_time_s", rep.seconds},
+          {"budget", {{"max_cell_steps", sc.split.max_cell_steps}, {"max_seconds", sc.split.max_seconds}}},
+          {"budget_spent", rep.budget_spent},
+          {"budget_reason", rep.budget_reason}};
+}
+
 nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
                             const std::vector<ReachResult>& results, const SafetyVerdict& verdict,
                             double analysis_time) {
@@ -110,7 +148,12 @@ nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
                        ? nlohmann::json(std::string(reach::kRateModeNames.name(sc.settings.mode)))
                        : nlohmann::json(nullptr);
   j["horizon"] = sc.settings.horizon;
-  j["n_steps"] = sc.settings.steps;
+  j["n_steps"] = results.front().steps.size();  // the first cell's (adaptive steps differ per cell)
+  j["step_mode"] = sc.settings.adaptive ? "adaptive" : "fixed";
+  j["complete"] = verdict.complete;
+  long bisections = 0;
+  for (const ReachResult& res : results) bisections += res.bisections;
+  j["bisections"] = bisections;
   j["cells"] = cells;
   const ReachResult& r0 = results.front();
   j["initial"] = {{"attitude_radius", sc.initial.attitude_radius},
@@ -123,7 +166,7 @@ nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
   for (const ReachStep& st : r0.steps) steps.push_back(step_json(st, verdict));
   j["steps"] = steps;
   j["final"] = finals_json(results);
-  j["verdict"] = !verdict.requested ? "not_requested" : (verdict.proved ? "safe" : "cannot_prove");
+  j["verdict"] = verdict.proved ? (verdict.requested ? "safe" : "not_requested") : "cannot_prove";
   j["first_failure_time"] = verdict.first_failure_time >= 0.0 ? nlohmann::json(verdict.first_failure_time)
                                                               : nlohmann::json(nullptr);
   if (!verdict.reason.empty()) j["safety_reason"] = verdict.reason;
@@ -189,13 +232,24 @@ void write_tube_csv(const std::filesystem::path& out_dir, const std::vector<Reac
 
 using BoundaryRows = std::vector<std::array<double, 7>>;
 
-/// One cell's boundary.csv rows: the boundary points of its attitude balls in the chart.
+/// One cell's boundary.csv rows: the boundary points of its attitude balls in the chart, or,
+/// when chart = −1 (no chart holds every ball), each ball in the best chart that holds it and a
+/// ball that fits none point by point in the charts of its points (ball_boundary_atlas).
 BoundaryRows cell_boundary_rows(std::size_t c, const ReachResult& res, int chart, int points) {
   BoundaryRows rows;
   auto emit = [&](int step, double t, const Mat3& Q, double r, const Mat3& Rc) {
-    for (const Vec3& p : ball_boundary(Q, r, Rc, chart, points)) {
-      rows.push_back({static_cast<double>(c), static_cast<double>(step), t,
-                      static_cast<double>(chart), p(0), p(1), p(2)});
+    int ball_chart = chart;
+    if (ball_chart < 0 && ball_fits_chart(Q, r, Rc, best_chart(Rc))) ball_chart = best_chart(Rc);
+    if (ball_chart >= 0) {
+      for (const Vec3& p : ball_boundary(Q, r, Rc, ball_chart, points)) {
+        rows.push_back({static_cast<double>(c), static_cast<double>(step), t,
+                        static_cast<double>(ball_chart), p(0), p(1), p(2)});
+      }
+      return;
+    }
+    for (const AtlasPoint& p : ball_boundary_atlas(Q, r, Rc, points)) {
+      rows.push_back({static_cast<double>(c), static_cast<double>(step), t, static_cast<double>(p.chart),
+                      p.r(0), p.r(1), p.r(2)});
     }
   };
   // The attitude projection of B_M is inside B_{Q−SP⁻¹Sᵀ} (docs/reach.md, coupled fact 3).
@@ -228,7 +282,7 @@ void write_samples_csv(const std::filesystem::path& out_dir, const SoundnessRepo
   for (std::size_t s = 0; s < rep.kept.size(); ++s) {
     const SampleTrajectory& tr = rep.kept[s];
     for (std::size_t k = 0; k < tr.t.size(); ++k) {
-      const Vec3 rr = chart_coordinates(chart, tr.R[k]);
+      const Vec3 rr = chart_coordinates(std::max(chart, 0), tr.R[k]);
       const std::array<double, 8> row{static_cast<double>(s), tr.t[k], rr(0), rr(1), rr(2),
                                       tr.omega[k](0), tr.omega[k](1), tr.omega[k](2)};
       csv.row(row);
@@ -325,15 +379,19 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
     io::remove_outputs(out_dir, {"reach.json", "trajectory.csv", "steps.csv", "tube.csv",
                                  "boundary.csv", "samples.csv"});
   }
-  const std::vector<InitialSet> cells =
-      partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells);
-  const std::vector<ReachResult> results = run_partitioned(*sc.loop, cells, sc.settings, sc.threads, world);
+  const SplitOutcome split =
+      run_with_splitting(*sc.loop, partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells),
+                         sc.settings, sc.safety, sc.split, sc.threads, world);
+  const std::vector<InitialSet>& cells = split.cells;
+  const std::vector<ReachResult>& results = split.results;
   // SIGINT / SIGTERM stop the analysis between its stages (io/interruption.hpp).
   io::throw_if_interrupted();
   const double analysis_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const SafetyVerdict verdict = verify_safety(sc.safety, results);
   nlohmann::json j = summary_json(sc, cells.size(), results, verdict, analysis_time);
+  j["partition"] = partition_json(sc, split);
+  if (!verdict.proved && sc.split.enabled) j["safety_reason"] = verdict.reason + "; " + split_summary(split.report, cells.size());
 
   if (!world.root()) {  // the other ranks reach the same verdict and exit code but write nothing
     j["chart"] = choose_chart(results);
@@ -345,7 +403,7 @@ nlohmann::json run_reach(const reach::ReachScenario& sc, const std::filesystem::
   write_steps_csv(out_dir, results);
   write_tube_csv(out_dir, results);
 
-  // Boundary representation in one exp chart (needs every ball inside it).
+  // Boundary representation in one exp chart when every ball fits it, else ball by ball (-1).
   io::throw_if_interrupted();
   const int chart = choose_chart(results);
   j["chart"] = chart;

@@ -123,8 +123,10 @@ AdversarialReport adversarial_check(const ClosedLoop& loop, const std::vector<In
     }
   });
   rep.stopped = stopped.load();
-  rep.attitude_claimed = results.front().steps.back().attitude_radius;
-  rep.omega_claimed = results.front().steps.back().omega_half_widths;
+  if (!results.front().steps.empty()) {
+    rep.attitude_claimed = results.front().steps.back().attitude_radius;
+    rep.omega_claimed = results.front().steps.back().omega_half_widths;
+  }
   rep.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return rep;
 }

@@ -21,4 +21,17 @@ namespace attiguard::reach {
 [[nodiscard]] std::vector<Vec3> ball_boundary(const Mat3& Q, double r, const Mat3& Rc, int chart,
                                               int points, int ode_steps = 32);
 
+/// A boundary point and the exp chart its coordinates are in.
+struct AtlasPoint {
+  int chart{0};
+  Vec3 r{Vec3::Zero()};
+};
+
+/// Boundary points of B_Q(R_c, r) for a ball that fits no single chart ("beyond one chart",
+/// docs/reach.md "Representation"): each geodesic of (24) is integrated on SO(3) itself
+/// (geodesic_endpoint: no chart to leave) and its endpoint given in the chart where it is
+/// nearest the chart's centre (best_chart). Same Fibonacci directions as ball_boundary.
+[[nodiscard]] std::vector<AtlasPoint> ball_boundary_atlas(const Mat3& Q, double r, const Mat3& Rc, int points,
+                                                          int ode_steps = 64);
+
 }  // namespace attiguard::reach

@@ -1,6 +1,8 @@
 #include "attiguard/reach/conreach.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <limits>
 #include <span>
 #include <cmath>
@@ -8,44 +10,9 @@
 #include <sstream>
 
 #include "attiguard/core/errors.hpp"
-#include "attiguard/integrate/integrator.hpp"
-#include "attiguard/integrate/product_state.hpp"
 #include "attiguard/reach/metrics.hpp"
 
 namespace attiguard::reach {
-
-void simulate(const ClosedLoop& loop, const Mat3& R0, const Vec3& omega0,
-              const std::vector<double>& times, double h,
-              const std::function<void(std::size_t, const Mat3&, const Vec3&)>& on_stop) {
-  using State = integrate::ProductState<1, 3>;
-  State y;
-  y.R[0] = R0;
-  y.x = omega0;
-  std::size_t first = 0;
-  if (!times.empty() && times.front() <= 0.0) {
-    on_stop(0, R0, omega0);
-    first = 1;
-  }
-  if (first >= times.size()) return;
-  integrate::IntegratorSettings s;
-  s.method = integrate::Method::rkmk4;
-  s.step = h;
-  auto f = [&loop](double, const State& st) {
-    State::Tangent d;
-    d.head<3>() = st.x;
-    d.tail<3>() = loop.omega_dot(st.R[0], st.x);
-    return d;
-  };
-  std::size_t idx = first;
-  const std::span<const double> stops(times.data() + first, times.size() - first);
-  integrate::integrate(
-      f, y, 0.0, stops, s,
-      [&](double, const State& st) {
-        on_stop(idx++, st.R[0], st.x);
-        return true;
-      },
-      [](double, const State&) {});
-}
 
 namespace {
 
@@ -54,7 +21,10 @@ void check_settings(const InitialSet& init, const ConReachSettings& s) {
   if (!(s.horizon > 0.0) || !std::isfinite(s.horizon)) bad("horizon must be a positive number");
   if (s.steps < 1) bad("steps must be >= 1");
   if (s.substeps < 1) bad("substeps must be >= 1");
-  if (!(s.integrator_step > 0.0)) bad("integrator_step must be positive");
+  if (!s.adaptive && !(s.integrator_step > 0.0)) bad("integrator_step must be positive");
+  if (!(s.integrator_step <= s.horizon) || !std::isfinite(s.integrator_step)) bad("integrator_step must not exceed the horizon");
+  if (s.max_bisections < 0 || s.max_bisections > 30) bad("max_bisections must be in [0, 30]");
+  if (s.max_adaptive_steps < 1) bad("max_adaptive_steps must be >= 1");
   if (s.line_search_steps < 1) bad("line_search_steps must be >= 1");
   if (!(s.rate_step > 0.0)) bad("rate_step must be positive");
   if (!(s.attitude_floor_ratio > 0.0 && s.attitude_floor_ratio <= 1.0)) {
@@ -223,41 +193,22 @@ Deviation ball_deviation(const StateMetric& m, double r) {
   return d;
 }
 
-/// The nominal's times: every sub-step boundary of every step, then the horizon.
-std::vector<double> sub_step_times(const ConReachSettings& s) {
-  const int N = s.steps;
-  const int m = s.substeps;
-  const double dt = s.horizon / N;
-  std::vector<double> times;
-  for (int i = 0; i < N; ++i) {
-    for (int j = 0; j < m; ++j) times.push_back(i * dt + j * dt / m);
-  }
-  times.push_back(s.horizon);
-  return times;
-}
-
-/// The nominal at every sub-step boundary; its integration error is bounded by the tube.
-std::vector<NominalPoint> nominal_points(const ClosedLoop& loop, const InitialSet& initial,
-                                         const std::vector<double>& times, double h) {
-  std::vector<NominalPoint> nominal(times.size());
-  simulate(loop, initial.R0, initial.omega0, times, h,
-           [&](std::size_t k, const Mat3& R, const Vec3& w) { nominal[k] = {times[k], R, w}; });
-  for (const auto& p : nominal) {
-    if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
-  }
-  return nominal;
-}
-
 /// What every step of one run shares.
 struct RunFrame {
   const ClosedLoop& loop;
   const ConReachSettings& s;
-  const std::vector<double>& times;
   double a;      ///< attitude_radius of the initial set
   double b;      ///< omega_radius of the initial set
   bool coupled;  ///< MetricKind::coupled
   bool att_dep;  ///< the loop's LMI depends on R
-  double dt;     ///< T/N
+};
+
+/// One step's time grid: t_i, its sub-step boundaries and t_{i+1}; `dt` the length the ball's
+/// growth e^{cΔt} uses (T/N on the fixed grid, as it always was; t_{i+1} − t_i when adaptive).
+struct StepGrid {
+  std::vector<double> times;
+  double dt{0.0};
+  double h{0.0};  ///< RKMK4 step of the nominal
 };
 
 /// Coupled metric, step 0: the radius r_0' = metric_cover_radius(M_1, a, b) of the initial set
@@ -295,9 +246,9 @@ struct StepChoice {
 
 /// The state tube of a step and the ball it started from.
 struct StepStart {
-  std::span<const NominalPoint> span;  ///< the step's nominal points (m + 1)
-  Deviation ball;                      ///< bounds of B_{M_i}(x_i, r_i)
-  Deviation z_state;                   ///< the state tube's start
+  std::vector<NominalPoint> points;  ///< the step's nominal points (m + 1)
+  Deviation ball;                    ///< bounds of B_{M_i}(x_i, r_i)
+  Deviation z_state;                 ///< the state tube's start
   TubeResult state_tube;
 };
 
@@ -316,17 +267,22 @@ Choice choose_step(const LmiEnclosure& enc, const StateMetric& M, const ConReach
   }
 }
 
+/// The sub-step bisection of the step's tubes (tube.hpp).
+TubeRefinement refinement(const RunFrame& f, const StepGrid& grid) {
+  return {grid.h, f.s.max_bisections};
+}
+
 /// The step's metric (docs/reach.md, "Rate selection"), over U_i; for a loop whose LMI depends on
 /// R with the product metric, U_i is redone once when the chosen Q falls below the floor.
 StepChoice choose_step_metric(const RunFrame& f, const ReachStep& st, const StepStart& start,
-                              const StateMetric& M, double r, const double* c_prev) {
+                              const StepGrid& grid, const StateMetric& M, double r, const double* c_prev) {
   const ConReachSettings& s = f.s;
   const bool recover = f.coupled && st.index == 0;
   auto radius_for = [&](const MetricSolution& sol) { return recover ? recovered_radius(f, sol) : r; };
   // Product metric: the ball at t_{i+1}. Coupled metric: the ball at T if the rate held for
   // the rest of the horizon, because the metric can only shrink afterwards (M_{i+1} ⪯ M_i):
   // a metric that buys a lower rate pays for it once, and the rate pays back on every step.
-  const double lookahead = f.coupled ? s.horizon - st.t0 : f.dt;
+  const double lookahead = f.coupled ? s.horizon - st.t0 : grid.dt;
   auto size_of = [&](const MetricSolution& sol) {
     return enclosure_radius({sol.Q, sol.S, sol.P}, radius_for(sol) * std::exp(sol.c * lookahead));
   };
@@ -337,7 +293,10 @@ StepChoice choose_step_metric(const RunFrame& f, const ReachStep& st, const Step
   StepChoice out;
   for (int pass = 0; pass < 2; ++pass) {
     const Deviation z_lmi = lmi_deviation(f, st.index, start.z_state, start.ball, r, q_floor);
-    out.lmi_tube = (z_lmi == start.z_state) ? start.state_tube : propagate_tube(f.loop, start.span, z_lmi);
+    out.lmi_tube = (z_lmi == start.z_state)
+                       ? start.state_tube
+                       : propagate_tube(f.loop, start.points, z_lmi, NominalErrorTerm::bounded,
+                                        refinement(f, grid));
     const LmiEnclosure enc = f.loop.lmi_enclosure(out.lmi_tube.attitude_hull, out.lmi_tube.omega_hull);
     sdp.q_floor = q_floor;
     out.choice = choose_step(enc, M, s, sdp, size_of, c_prev, st);
@@ -389,40 +348,228 @@ void close_step(ReachStep& st, const Deviation& e, double r, double dt, const No
   }
 }
 
-/// Step i of Algorithm 1 from the ball B_M(x_i, r): the state tube (its end carried into
-/// `carried`), the metric over U_i, the ball at t_{i+1}.
-ReachStep reach_step(const RunFrame& f, int i, const StateMetric& M, double r, Deviation& carried,
-                     ReachResult& res) {
-  const int m = f.s.substeps;
+/// The nominal at the grid's times from the step's first point (simulate_from: bit for bit the
+/// continuous simulation); NumericalError when it is not finite.
+std::vector<NominalPoint> step_nominal(const ClosedLoop& loop, const NominalPoint& from, const StepGrid& grid) {
+  std::vector<NominalPoint> pts(grid.times.size());
+  try {
+    simulate_from(loop, from.t, from.R, from.omega, grid.times, grid.h,
+                  [&](std::size_t k, const Mat3& R, const Vec3& w) { pts[k] = {grid.times[k], R, w}; });
+  } catch (const NumericalError& e) {
+    std::ostringstream os;
+    os << "ConReach: the nominal from t = " << from.t << " s (RKMK4 step " << grid.h << " s): " << e.what();
+    throw NumericalError(os.str());
+  }
+  pts.front() = from;
+  for (const auto& p : pts) {
+    if (!p.R.allFinite() || !p.omega.allFinite()) throw NumericalError("ConReach: nominal trajectory is not finite");
+  }
+  return pts;
+}
+
+/// What a step computed, kept only when the step succeeds.
+struct StepAttempt {
   ReachStep st;
+  Deviation carried;                 ///< the state tube's end
+  std::vector<NominalPoint> points;  ///< the state tube's nominal points
+  int bisections{0};
+  bool recovered{false};             ///< coupled step 0: the initial ball re-expressed
+  double r0{0.0};
+};
+
+/// Step i of Algorithm 1 on `grid` from the ball B_M(x_i, r) centred at `from`: the state tube,
+/// the metric over U_i, the ball at t_{i+1}. Throws EnclosureDiverges / VerificationFailure when
+/// the interval cannot be carried.
+StepAttempt reach_step(const RunFrame& f, int i, const StepGrid& grid, const NominalPoint& from,
+                       const StateMetric& M, double r, const Deviation& carried, const double* c_prev) {
+  StepAttempt out;
+  ReachStep& st = out.st;
   st.index = i;
-  st.t0 = f.times[static_cast<std::size_t>(i * m)];
-  st.t1 = f.times[static_cast<std::size_t>((i + 1) * m)];
-  StepStart start{std::span<const NominalPoint>(res.nominal.data() + static_cast<std::ptrdiff_t>(i) * m,
-                                                static_cast<std::size_t>(m) + 1),
-                  ball_deviation(M, r), Deviation{}, TubeResult{}};
+  st.t0 = grid.times.front();
+  st.t1 = grid.times.back();
+  StepStart start{step_nominal(f.loop, from, grid), ball_deviation(M, r), Deviation{}, TubeResult{}};
   start.z_state = carried.min(start.ball);
-  start.state_tube = propagate_tube(f.loop, start.span, start.z_state);
-  carried = start.state_tube.end;
+  start.state_tube = propagate_tube(f.loop, start.points, start.z_state, NominalErrorTerm::bounded,
+                                    refinement(f, grid));
+  out.carried = start.state_tube.end;
+  out.points = start.state_tube.points;
+  out.bisections = start.state_tube.bisections;
   st.state_tube = start.state_tube.segments;
 
-  const double c_prev = res.steps.empty() ? 0.0 : res.steps.back().c;
-  const StepChoice chosen = choose_step_metric(f, st, start, M, r, res.steps.empty() ? nullptr : &c_prev);
+  const StepChoice chosen = choose_step_metric(f, st, start, grid, M, r, c_prev);
   record_choice(st, chosen);
-  res.sdp_solves += chosen.choice.solves;
   // Coupled metric, step 0: the initial ball is re-expressed in the new metric M_1 itself,
   // B_{M_1}(x_0, r_0'), joined to the centre by the straight curves (R0 exp(sŵ), ω0 + sΔω)
   // inside the initial set (docs/reach.md, "Coupled metrics"): U_0 is the flow of the initial
   // set and M_1 ⪯ M_0 is only a normalisation.
   if (f.coupled && i == 0) {
     r = recovered_radius(f, chosen.choice.sol);
-    res.r0 = r;
-    res.Q0 = st.Q;
-    res.S0 = st.S;
-    res.P0 = st.P;
+    out.recovered = true;
+    out.r0 = r;
   }
-  close_step(st, start.state_tube.nominal_error, r, f.dt, res.nominal[static_cast<std::size_t>((i + 1) * m)]);
-  return st;
+  close_step(st, start.state_tube.nominal_error, r, grid.dt, out.points.back());
+  return out;
+}
+
+/// The fixed grid of step i of N: t_i = i T/N, sub-steps t_i + j (T/N)/m, the last step ends at T.
+StepGrid fixed_grid(const ConReachSettings& s, int i) {
+  const int N = s.steps;
+  const int m = s.substeps;
+  const double dt = s.horizon / N;
+  StepGrid g;
+  for (int j = 0; j < m; ++j) g.times.push_back(i * dt + j * dt / m);
+  g.times.push_back(i + 1 == N ? s.horizon : (i + 1) * dt);
+  g.dt = dt;
+  g.h = s.integrator_step;
+  return g;
+}
+
+/// An adaptive step's grid on [t0, t0 + dt]: m equal sub-steps; the nominal's RKMK4 step is the
+/// user's integrator_step, or 0.02/λ, at most one sub-step.
+StepGrid adaptive_grid(const ConReachSettings& s, double t0, double dt, double rate_scale) {
+  const int m = s.substeps;
+  const double t1 = t0 + dt;
+  StepGrid g;
+  for (int j = 0; j < m; ++j) g.times.push_back(t0 + j * dt / m);
+  g.times.push_back(t1);
+  g.dt = t1 - t0;
+  const double h = s.integrator_step > 0.0 ? s.integrator_step : 0.02 / rate_scale;
+  g.h = std::min(h, dt / m);
+  return g;
+}
+
+/// Commits a successful step into the result.
+void commit_step(StepAttempt&& at, ReachResult& res, StateMetric& M, double& r, Deviation& carried) {
+  res.sdp_solves += at.st.sdp_solves;
+  res.bisections += at.bisections;
+  if (at.recovered) {
+    res.r0 = at.r0;
+    res.Q0 = at.st.Q;
+    res.S0 = at.st.S;
+    res.P0 = at.st.P;
+  }
+  res.nominal.insert(res.nominal.end(), at.points.begin() + 1, at.points.end());
+  carried = at.carried;
+  M = at.st.metric();
+  r = at.st.r;
+  res.steps.push_back(std::move(at.st));
+}
+
+/// Marks the result as stopped at t with the reason.
+void stop_at(ReachResult& res, double t, const std::string& why) {
+  res.complete = false;
+  res.stop_time = t;
+  res.stop_reason = why;
+}
+
+}  // namespace
+
+double loop_rate_scale(const ClosedLoop& loop, const InitialSet& initial) {
+  const AttitudeBall att{initial.R0, initial.attitude_radius};
+  const Box3 box = Box3::around(initial.omega0, Vec3::Constant(initial.omega_radius));
+  const double a = loop.A_enclosure(att, box).abs_max().norm();
+  const double b = loop.B_enclosure(att, box).abs_max().norm();
+  const double w = box.norm_max();
+  const double lambda = std::max({std::sqrt(a), b, w});
+  return std::isfinite(lambda) ? lambda : 0.0;
+}
+
+namespace {
+
+/// The ball being carried and the result it is carried into.
+struct Carry {
+  ReachResult& res;
+  StateMetric M;
+  double r;
+  Deviation carried;
+};
+
+/// Step i on `grid` from the carried ball: the step, or nothing and `failure` when the
+/// interval cannot be carried (EnclosureDiverges, VerificationFailure).
+std::optional<StepAttempt> attempt_step(const RunFrame& f, const Carry& cs, int i, const StepGrid& grid,
+                                        std::string& failure) {
+  const double c_prev = cs.res.steps.empty() ? 0.0 : cs.res.steps.back().c;
+  try {
+    return reach_step(f, i, grid, cs.res.nominal.back(), cs.M, cs.r, cs.carried,
+                      cs.res.steps.empty() ? nullptr : &c_prev);
+  } catch (const EnclosureDiverges& e) {
+    failure = e.what();
+  } catch (const VerificationFailure& e) {
+    failure = e.what();
+  }
+  return std::nullopt;
+}
+
+/// True (and the result stopped) when the settings' step_check refuses the last step.
+bool stopped_by_check(const RunFrame& f, ReachResult& res) {
+  if (!f.s.step_check) return false;
+  double t = res.steps.back().t0;
+  const std::string why = f.s.step_check(res.steps.back(), t);
+  if (why.empty()) return false;
+  stop_at(res, t, why);
+  return true;
+}
+
+/// The user's grid: N steps of T/N; the first interval that cannot be carried ends the run.
+void run_fixed(const RunFrame& f, Carry& cs) {
+  for (int i = 0; i < f.s.steps; ++i) {
+    const StepGrid grid = fixed_grid(f.s, i);
+    std::string failure;
+    std::optional<StepAttempt> at = attempt_step(f, cs, i, grid, failure);
+    if (!at) {
+      stop_at(cs.res, grid.times.front(), failure);
+      return;
+    }
+    commit_step(std::move(*at), cs.res, cs.M, cs.r, cs.carried);
+    if (stopped_by_check(f, cs.res)) return;
+  }
+}
+
+/// Adaptive steps (docs/reach.md, "Adaptive steps"): first step 0.3/λ within [T/400, T/10]; a
+/// step that cannot be carried is redone at half length down to 1/64 of the first; the next step
+/// halves when the ball grew by more than e^{0.3} over the step and grows by 1.25 (up to 4× the
+/// first, T/4 at most) when it contracted.
+void run_adaptive(const RunFrame& f, const InitialSet& initial, Carry& cs) {
+  const double lambda = loop_rate_scale(f.loop, initial);
+  const double T = f.s.horizon;
+  const double dt0 = std::clamp(lambda > 0.0 ? 0.3 / lambda : T / 10.0, T / 400.0, T / 10.0);
+  const double dt_min = dt0 / 64.0;
+  const double dt_max = std::min(T / 4.0, 4.0 * dt0);
+  double dt = dt0;
+  double t = 0.0;
+  for (int i = 0; T - t > 1e-12 * T;) {
+    if (i >= f.s.max_adaptive_steps) {
+      std::ostringstream os;
+      os << "reach: the adaptive steps reached max_adaptive_steps = " << f.s.max_adaptive_steps
+         << " at t = " << t << " s";
+      stop_at(cs.res, t, os.str());
+      return;
+    }
+    double len = std::min(dt, T - t);
+    if (T - (t + len) < 0.25 * len) len = T - t;  // no sliver at the horizon
+    const StepGrid grid = adaptive_grid(f.s, t, len, lambda > 0.0 ? lambda : 1.0 / T);
+    std::string failure;
+    std::optional<StepAttempt> at = attempt_step(f, cs, i, grid, failure);
+    if (!at) {
+      if (!(len > dt_min * (1.0 + 1e-9))) {
+        stop_at(cs.res, t, failure);
+        return;
+      }
+      dt = std::max(dt_min, 0.5 * len);
+      ++cs.res.retries;
+      continue;
+    }
+    const double growth = at->st.c * len;
+    commit_step(std::move(*at), cs.res, cs.M, cs.r, cs.carried);
+    if (stopped_by_check(f, cs.res)) return;
+    t = cs.res.steps.back().t1;
+    ++i;
+    if (growth > 0.3) {
+      dt = std::max(dt_min, 0.5 * len);
+    } else if (growth < 0.0) {
+      dt = std::min(dt_max, 1.25 * std::max(dt, len));
+    }
+  }
 }
 
 }  // namespace
@@ -436,19 +583,15 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   res.P0 = initial.P0;
   res.r0 = std::sqrt(initial.attitude_radius * initial.attitude_radius +
                      lambda_max(initial.P0) * initial.omega_radius * initial.omega_radius);
-  const std::vector<double> times = sub_step_times(s);
-  res.nominal = nominal_points(loop, initial, times, s.integrator_step);
-
-  const RunFrame frame{loop, s, times, initial.attitude_radius, initial.omega_radius,
-                       s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude(), s.horizon / s.steps};
-  StateMetric M{Mat3::Identity(), Mat3::Zero(), initial.P0};
-  double r = res.r0;
-  Deviation carried = Deviation::of_balls(initial.attitude_radius, initial.omega_radius);
-  for (int i = 0; i < s.steps; ++i) {
-    ReachStep st = reach_step(frame, i, M, r, carried, res);
-    M = st.metric();
-    r = st.r;
-    res.steps.push_back(std::move(st));
+  res.nominal.push_back({0.0, initial.R0, initial.omega0});
+  const RunFrame frame{loop, s, initial.attitude_radius, initial.omega_radius,
+                       s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude()};
+  Carry cs{res, StateMetric{Mat3::Identity(), Mat3::Zero(), initial.P0}, res.r0,
+           Deviation::of_balls(initial.attitude_radius, initial.omega_radius)};
+  if (s.adaptive) {
+    run_adaptive(frame, initial, cs);
+  } else {
+    run_fixed(frame, cs);
   }
   res.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -12,6 +12,7 @@
 
 #include "attiguard/reach/closed_loop.hpp"
 #include "attiguard/reach/contraction_sdp.hpp"
+#include "attiguard/reach/simulate.hpp"
 #include "attiguard/reach/tube.hpp"
 
 namespace attiguard::reach {
@@ -28,6 +29,8 @@ struct InitialSet {
 };
 
 /// How the contraction rate of each step is chosen.
+struct ReachStep;
+
 enum class RateMode {
   line_search,    ///< Algorithm 1 as the authors run it (docs/errata.md, ConReach 1)
   min_enclosure,  ///< the (c, Q, P) giving the smallest bi-invariant enclosure radius
@@ -61,6 +64,15 @@ struct ConReachSettings {
   /// G_Q-geodesics of the ball stay in the attitude ball of radius r_i/√(ratio·λ_min(Q_i)).
   double attitude_floor_ratio{0.5};
   MetricSdpSettings sdp;
+  /// Step lengths chosen by the analysis (docs/reach.md, "Adaptive steps"); `steps` is then
+  /// unused and `integrator_step` ≤ 0 means "derived from the loop".
+  bool adaptive{false};
+  int max_bisections{6};          ///< halvings of a sub-step whose enclosure or ε fails
+  int max_adaptive_steps{2000};   ///< adaptive: most steps of one cell (work bound)
+  /// Optional: called after every step; a non-empty reason ends the analysis there (complete =
+  /// false, stop time = the `t` it sets). The automatic splitting stops a cell at its first
+  /// segment that cannot prove the safety specification (auto_split.hpp).
+  std::function<std::string(const ReachStep&, double& t)> step_check;
 };
 
 /// One rate tried at one step.
@@ -107,21 +119,29 @@ struct ReachResult {
   Mat3 S0{Mat3::Zero()};  ///< coupled metric: the initial ball is B_{M_1}((R0, ω0), r0)
   double r0{0.0};
   std::vector<ReachStep> steps;
-  std::vector<NominalPoint> nominal;  ///< at every sub-step boundary
+  std::vector<NominalPoint> nominal;  ///< at every sub-step boundary (bisected ones included)
   int sdp_solves{0};
   double wall_time_s{0.0};
+  /// False when the analysis stopped before the horizon: a sub-step's enclosure diverged or its
+  /// nominal error or a step's metric could not be proved, at the shortest step allowed.
+  bool complete{true};
+  double stop_time{-1.0};   ///< start of the interval that could not be carried (−1: complete)
+  std::string stop_reason;  ///< why
+  int bisections{0};        ///< sub-steps bisected in the state tube
+  int retries{0};           ///< adaptive: steps redone at half length
 };
 
-/// Runs ConReach. Throws InputError for invalid settings, NumericalError for numerical failure
-/// (NaN, diverging tube or nominal), and VerificationFailure ("cannot be proved rigorously",
-/// naming the step) when in rigorous mode no metric of a step can be proved.
+/// Runs ConReach. Throws InputError for invalid settings and NumericalError for numerical
+/// failure (NaN, non-finite nominal). An interval that cannot be carried — the tube's a priori
+/// enclosure diverges, the nominal's error or (rigorous mode) every metric of the step cannot be
+/// proved — ends the analysis there: the result is returned with complete = false, the steps
+/// before it and the reason (docs/reach.md, "Adaptive steps").
 [[nodiscard]] ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
                                        const ConReachSettings& settings);
 
-/// Simulates X from (R0, ω0) with RKMK4 (step h), calling on_stop(i, R, ω) exactly at every
-/// times[i] (increasing, > t0 = 0 unless equal: times[0] = 0 is reported first).
-void simulate(const ClosedLoop& loop, const Mat3& R0, const Vec3& omega0,
-              const std::vector<double>& times, double h,
-              const std::function<void(std::size_t, const Mat3&, const Vec3&)>& on_stop);
+/// The loop's rate scale λ [1/s] over the initial set: max(√‖A‖, ‖B‖, max‖ω‖) of the LMI's
+/// enclosures (closed_loop.hpp) on B_I(R0, a) × B(ω0, b); the adaptive first step is 0.3/λ
+/// (docs/reach.md, "Adaptive steps").
+[[nodiscard]] double loop_rate_scale(const ClosedLoop& loop, const InitialSet& initial);
 
 }  // namespace attiguard::reach

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "attiguard/core/name_table.hpp"
+#include "attiguard/reach/auto_split.hpp"
 #include "attiguard/reach/closed_loop.hpp"
 #include "attiguard/reach/conreach.hpp"
 #include "attiguard/reach/safety.hpp"
@@ -38,6 +39,7 @@ struct ReachScenario {
   int attitude_cells{1};                   ///< [partition] attitude_cells (per axis)
   int omega_cells{1};                      ///< [partition] omega_cells (per axis)
   int threads{0};                          ///< [partition] threads (0: all cores)
+  SplitSettings split;                     ///< [partition] split, max_cell_steps, max_seconds
   SoundnessSettings soundness;             ///< [soundness]
   SafetySpec safety;                       ///< [safety]
   int boundary_points{200};                ///< [output] boundary_points

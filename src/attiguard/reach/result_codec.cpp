@@ -128,7 +128,8 @@ std::string encode_result(const ReachResult& r) {
   const json j = {{"init", {dense(in.R0), in.attitude_radius, dense(in.omega0), in.omega_radius, dense(in.P0)}},
                   {"Q0", dense(r.Q0)}, {"S0", dense(r.S0)}, {"P0", dense(r.P0)}, {"r0", r.r0},
                   {"steps", array_of(r.steps, step_json)}, {"nominal", array_of(r.nominal, nominal_json)},
-                  {"solves", r.sdp_solves}, {"wall", r.wall_time_s}};
+                  {"solves", r.sdp_solves}, {"wall", r.wall_time_s},
+                  {"done", {r.complete, r.stop_time, r.stop_reason, r.bisections, r.retries}}};
   const std::vector<std::uint8_t> bytes = json::to_cbor(j);
   return {bytes.begin(), bytes.end()};
 }
@@ -151,6 +152,12 @@ ReachResult decode_result(const std::string& bytes) {
     r.nominal = records_of<NominalPoint>(j.at("nominal"), nominal_from);
     r.sdp_solves = j.at("solves").get<int>();
     r.wall_time_s = j.at("wall").get<double>();
+    const json& done = j.at("done");
+    r.complete = done.at(0).get<bool>();
+    r.stop_time = done.at(1).get<double>();
+    r.stop_reason = done.at(2).get<std::string>();
+    r.bisections = done.at(3).get<int>();
+    r.retries = done.at(4).get<int>();
     return r;
   } catch (const json::exception& e) {
     throw NumericalError(std::string("reach result: malformed gathered cell: ") + e.what());

@@ -35,10 +35,21 @@ struct SafetyVerdict {
   bool proved{false};
   double first_failure_time{-1.0};  ///< start of the first segment not proved (-1: none)
   std::string reason;               ///< which constraint could not be proved first
-  std::vector<bool> step_safe;      ///< per ConReach step (all cells)
+  std::vector<bool> step_safe;      ///< per ConReach step of the first cell
+  bool complete{true};              ///< every analysis reached the horizon
 };
 
-/// Checks the state tubes of every result.
+/// Empty when the single state (R, ω) meets the specification, else the first constraint it
+/// violates (a cone's name, omega_abs_max or omega_norm_max).
+[[nodiscard]] std::string violated_by_state(const SafetySpec& spec, const Mat3& R, const Vec3& omega);
+
+/// Empty when every state of the tube segment is proved to meet the specification, else the
+/// first constraint that cannot be proved (a cone's name, omega_abs_max or omega_norm_max).
+[[nodiscard]] std::string violated_by_segment(const SafetySpec& spec, const TubeSegment& seg);
+
+/// Checks the state tubes of every result. An analysis that stopped before the horizon
+/// (ReachResult::complete false) is a failure at its stop time, whether or not safety was
+/// requested: `proved` then is false and `complete` too.
 [[nodiscard]] SafetyVerdict verify_safety(const SafetySpec& spec, const std::vector<ReachResult>& results);
 
 }  // namespace attiguard::reach

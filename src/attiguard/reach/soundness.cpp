@@ -55,14 +55,41 @@ struct SampleOutcome {
   SampleTrajectory traj;        ///< filled when the sample is kept
 };
 
-/// The sample at sub-step time k against tube segments j = k − 1 (ending at t_k) and j = k
+/// Where the nominal points of a result sit: global segment g (from point g to g + 1) is
+/// segment `segment[g].second` of step `segment[g].first`, and point k carries ball `ball[k]`
+/// (0: the initial ball; −1: a sub-step boundary inside a step). Steps may have any number of
+/// sub-steps (adaptive steps, bisected sub-steps).
+struct PointIndex {
+  std::vector<double> times;
+  std::vector<std::pair<std::size_t, std::size_t>> segment;
+  std::vector<long> ball;
+};
+
+PointIndex index_points(const ReachResult& res) {
+  PointIndex ix;
+  for (const NominalPoint& p : res.nominal) ix.times.push_back(p.t);
+  ix.ball.assign(ix.times.size(), -1);
+  ix.ball[0] = 0;
+  for (std::size_t i = 0; i < res.steps.size(); ++i) {
+    const std::size_t n = res.steps[i].state_tube.size();
+    for (std::size_t j = 0; j < n; ++j) ix.segment.emplace_back(i, j);
+    if (ix.segment.size() < ix.ball.size()) ix.ball[ix.segment.size()] = static_cast<long>(i + 1);
+  }
+  if (ix.segment.size() + 1 != ix.times.size()) {
+    throw NumericalError("soundness check: the nominal points and the tube segments do not match");
+  }
+  return ix;
+}
+
+/// The sample at nominal point k against tube segments g = k − 1 (ending at t_k) and g = k
 /// (starting there), and their U_i.
-void check_tube_at(const ReachResult& res, std::size_t m, std::size_t k, double t, const Mat3& Rk,
+void check_tube_at(const ReachResult& res, const PointIndex& ix, std::size_t k, double t, const Mat3& Rk,
                    const Vec3& wk, SampleOutcome& out) {
-  for (const std::size_t j : {k - 1, k}) {
-    if (j >= res.steps.size() * m) continue;  // k − 1 wraps for k = 0
-    const ReachStep& st = res.steps[j / m];
-    const double ex = std::max(excess(st.state_tube[j % m].attitude, st.state_tube[j % m].omega, Rk, wk),
+  for (const std::size_t g : {k - 1, k}) {
+    if (g >= ix.segment.size()) continue;  // k − 1 wraps for k = 0
+    const ReachStep& st = res.steps[ix.segment[g].first];
+    const TubeSegment& seg = st.state_tube[ix.segment[g].second];
+    const double ex = std::max(excess(seg.attitude, seg.omega, Rk, wk),
                                excess(st.attitude_box, st.omega_box, Rk, wk));
     if (!(ex <= 0.0) && out.tube_violation < 0.0) out.tube_violation = t;
     out.worst_excess = std::max(out.worst_excess, std::isfinite(ex) ? ex : 1e300);
@@ -83,20 +110,20 @@ void check_ball_at(const ReachResult& res, std::size_t i, double t, const Mat3& 
   out.worst = std::max(out.worst, std::isfinite(ratio) ? ratio : 1e300);
 }
 
-/// Simulates one sample from (R, ω) at the nominal's sub-step times (m per step) against its
-/// cell's tube, U_i and balls.
-SampleOutcome check_sample(const ClosedLoop& loop, const ReachResult& res, const Mat3& R, const Vec3& w,
-                           const std::vector<double>& times, std::size_t m, double step, bool keep) {
+/// Simulates one sample from (R, ω) at its cell's nominal times against the cell's tube, U_i
+/// and balls.
+SampleOutcome check_sample(const ClosedLoop& loop, const ReachResult& res, const PointIndex& ix,
+                           const Mat3& R, const Vec3& w, double step, bool keep) {
   SampleOutcome out;
-  simulate(loop, R, w, times, step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
+  simulate(loop, R, w, ix.times, step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
     if (keep) {
-      out.traj.t.push_back(times[k]);
+      out.traj.t.push_back(ix.times[k]);
       out.traj.R.push_back(Rk);
       out.traj.omega.push_back(wk);
     }
-    check_tube_at(res, m, k, times[k], Rk, wk, out);
-    if (k % m != 0) return;
-    check_ball_at(res, k / m, times[k], Rk, wk, out);
+    check_tube_at(res, ix, k, ix.times[k], Rk, wk, out);
+    if (ix.ball[k] < 0) return;
+    check_ball_at(res, static_cast<std::size_t>(ix.ball[k]), ix.times[k], Rk, wk, out);
   });
   return out;
 }
@@ -141,10 +168,8 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
   }
   SoundnessReport rep;
   rep.samples = settings.samples;
-  const ReachResult& r0 = results.front();
-  std::vector<double> times;
-  for (const auto& p : r0.nominal) times.push_back(p.t);
-  const std::size_t m = (times.size() - 1) / r0.steps.size();
+  std::vector<PointIndex> index;
+  for (const ReachResult& res : results) index.push_back(index_points(res));
   SampleTotals totals;
   rep.kept.resize(static_cast<std::size_t>(std::min<long>(settings.keep, settings.samples)));
 
@@ -157,7 +182,7 @@ SoundnessReport check_soundness(const ClosedLoop& loop, const InitialSet& whole,
     const Vec3 w = whole.omega0 + sample_ball(g, whole.omega_radius, boundary);
     const std::size_t cell = containing_cell(cells, R, w);
     const bool keep = s < static_cast<long>(rep.kept.size());
-    SampleOutcome outcome = check_sample(loop, results[cell], R, w, times, m, settings.step, keep);
+    SampleOutcome outcome = check_sample(loop, results[cell], index[cell], R, w, settings.step, keep);
     merge_sample(totals, outcome, rep, s, keep);
     ++checked;
   });

@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 #include <sstream>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/reach/nominal_error.hpp"
+#include "attiguard/reach/simulate.hpp"
 
 namespace attiguard::reach {
 
@@ -58,36 +62,25 @@ struct AprioriEnclosure {
 };
 
 /// The a-priori enclosure of every trajectory from W × B_I(R_0, e_R) over [p0.t, p1.t]
-/// (docs/reach.md, "Enclosure U_i", step 1); NumericalError when the iteration diverges.
-AprioriEnclosure a_priori_enclosure(const ClosedLoop& loop, const NominalPoint& p0,
-                                    const NominalPoint& p1, const Box3& W, double eR) {
+/// (docs/reach.md, "Enclosure U_i", step 1); nothing when the iteration diverges.
+std::optional<AprioriEnclosure> a_priori_enclosure(const ClosedLoop& loop, const NominalPoint& p0,
+                                                   const NominalPoint& p1, const Box3& W, double eR) {
   const double h = p1.t - p0.t;
   Box3 F = loop.omega_dot_enclosure({p0.R, eR}, W);
   Box3 G = span_box(W, F, h);
   G = G.inflated(0.1 * G.radius() + Vec3::Constant(1e-12));
   double rhoG = (eR + h * G.norm_max()) * 1.1 + 1e-12;
-  bool ok = false;
-  for (int it = 0; it < 40 && !ok; ++it) {
+  for (int it = 0; it < 40; ++it) {
     if (!G.finite() || !std::isfinite(rhoG) || rhoG > 1e6) break;
     F = loop.omega_dot_enclosure({p0.R, rhoG}, G);
     const Box3 cand = span_box(W, F, h);
     const double needR = eR + h * G.norm_max();
-    if (G.contains(cand) && needR <= rhoG) {
-      ok = true;
-    } else {
-      G = G.hull(cand);
-      G = G.inflated(0.25 * (cand.radius()) + Vec3::Constant(1e-12));
-      rhoG = std::max(rhoG, 1.25 * needR + 1e-12);
-    }
+    if (G.contains(cand) && needR <= rhoG) return AprioriEnclosure{F, G, rhoG};
+    G = G.hull(cand);
+    G = G.inflated(0.25 * (cand.radius()) + Vec3::Constant(1e-12));
+    rhoG = std::max(rhoG, 1.25 * needR + 1e-12);
   }
-  if (!ok) {
-    std::ostringstream os;
-    os << "ConReach tube: no a priori enclosure over [" << p0.t << ", " << p1.t
-       << "] s (the enclosure diverges; use more sub-steps, a smaller initial set or a shorter "
-          "horizon)";
-    throw NumericalError(os.str());
-  }
-  return {F, G, rhoG};
+  return std::nullopt;
 }
 
 /// The Metzler matrix M of the comparison system ż ≤ M z on (B_I(R_0, ρ_G), G) (docs/reach.md,
@@ -126,19 +119,13 @@ ComparisonFlow comparison_flow(const Mat5& M, double h) {
 
 /// ε of the sub-step: x* (the exact solution from p0, inside G over [s, s+h] since p0 is in the
 /// set) ends within ε of p1 (nominal_error.hpp); zero for NominalErrorTerm::omitted_unsound.
-/// VerificationFailure when ε cannot be bounded.
-Deviation sub_step_error(const PolynomialField& field, const NominalPoint& p0, const NominalPoint& p1,
-                         const AprioriEnclosure& apriori, NominalErrorTerm term) {
-  std::string why;
+/// Nothing (and `why`) when ε cannot be bounded.
+std::optional<Deviation> sub_step_error(const PolynomialField& field, const NominalPoint& p0,
+                                        const NominalPoint& p1, const AprioriEnclosure& apriori,
+                                        NominalErrorTerm term, std::string& why) {
   const std::optional<NominalStepError> step_error = nominal_step_error(
       field, p0.R, p0.omega, p1.R, p1.omega, p1.t - p0.t, apriori.G, apriori.rhoG, why);
-  if (!step_error) {
-    std::ostringstream os;
-    os << "ConReach tube: the nominal's integration error cannot be bounded over [" << p0.t
-       << ", " << p1.t << "] s (" << why << "): cannot prove; use more sub-steps or a smaller "
-       << "integrator_step";
-    throw VerificationFailure(os.str());
-  }
+  if (!step_error) return std::nullopt;
   return term == NominalErrorTerm::bounded ? step_error->bound : Deviation{};
 }
 
@@ -183,38 +170,110 @@ void add_to_hulls(TubeResult& out, const TubeSegment& seg, const Mat3& R_first, 
   }
 }
 
+/// One sub-step of propagate_tube from the deviation z at p0: its segment and the deviations at
+/// p1; nothing when its a priori enclosure diverges or its ε cannot be bounded (`failure`).
+struct SubStep {
+  TubeSegment seg;
+  Deviation z1;
+  Deviation e1;
+};
+
+std::optional<SubStep> sub_step(const ClosedLoop& loop, const PolynomialField& field,
+                                const NominalPoint& p0, const NominalPoint& p1, const Deviation& z,
+                                const Deviation& e, NominalErrorTerm term, std::string& failure,
+                                bool& verification) {
+  const Vec3 dev0 = z.omega_half_widths();
+  const std::optional<AprioriEnclosure> apriori =
+      a_priori_enclosure(loop, p0, p1, Box3::around(p0.omega, dev0), z.e_R);
+  if (!apriori) {
+    std::ostringstream os;
+    os << "ConReach tube: no a priori enclosure over [" << p0.t << ", " << p1.t
+       << "] s (the enclosure diverges; use more sub-steps, a smaller initial set or a shorter "
+          "horizon)";
+    failure = os.str();
+    verification = false;
+    return std::nullopt;
+  }
+  std::string why;
+  const std::optional<Deviation> eps = sub_step_error(field, p0, p1, *apriori, term, why);
+  if (!eps) {
+    std::ostringstream os;
+    os << "ConReach tube: the nominal's integration error cannot be bounded over [" << p0.t
+       << ", " << p1.t << "] s (" << why << "): cannot prove; use more sub-steps or a smaller "
+       << "integrator_step";
+    failure = os.str();
+    verification = true;
+    return std::nullopt;
+  }
+  const ComparisonFlow flow = comparison_flow(comparison_matrix(loop, p0.R, *apriori), p1.t - p0.t);
+  // Deviations from x*: z(s+h) ≤ exp(Mh) z(s), sup over the sub-step ≤ exp(M⁺h) z(s); from p1
+  // add eps (triangle inequality, componentwise and in d). The factor and 1e-15 cover the
+  // rounding of the 5×5 products.
+  const Deviation::Vector z0 = z.vector();
+  SubStep out;
+  out.z1 = Deviation::from_vector(((flow.E * z0).cwiseMax(0.0) + eps->vector()) * (1.0 + 1e-12) +
+                                  Deviation::Vector::Constant(1e-15));
+  const Deviation zsup = Deviation::from_vector((flow.Eplus * z0).cwiseMax(0.0) * (1.0 + 1e-12) +
+                                                Deviation::Vector::Constant(1e-15));
+  out.e1 = Deviation::from_vector(((flow.E * e.vector()).cwiseMax(0.0) + eps->vector()) * (1.0 + 1e-12));
+  out.seg = segment_enclosure(p0, p1, *apriori, *eps, dev0, out.z1, zsup);
+  // Deviation at p1; the ω part can also be read off G.
+  out.z1.e_R = std::min(out.z1.e_R, apriori->rhoG);
+  return out;
+}
+
+/// The nominal point at the mid-time of [p0, p1], simulated from p0 (RKMK4, step ≤ h).
+NominalPoint mid_point(const ClosedLoop& loop, const NominalPoint& p0, const NominalPoint& p1, double h) {
+  const double tm = 0.5 * (p0.t + p1.t);
+  NominalPoint mid{tm, p0.R, p0.omega};
+  const std::vector<double> stop{tm};
+  simulate_from(loop, p0.t, p0.R, p0.omega, stop, std::min(h, tm - p0.t),
+                [&](std::size_t, const Mat3& R, const Vec3& w) {
+                  mid.R = R;
+                  mid.omega = w;
+                });
+  if (!mid.R.allFinite() || !mid.omega.allFinite()) {
+    throw NumericalError("ConReach tube: the nominal is not finite at a bisected sub-step");
+  }
+  return mid;
+}
+
 }  // namespace
 
 TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
-                          const Deviation& start, NominalErrorTerm term) {
+                          const Deviation& start, NominalErrorTerm term, const TubeRefinement& refine) {
   if (nominal.size() < 2) throw NumericalError("ConReach tube: needs at least two nominal points");
   TubeResult out;
   Deviation z = Deviation::from_vector(start.vector().cwiseMax(0.0));
   Deviation e;  // the exact trajectory from nominal.front(): its deviation
   const PolynomialField field = loop.polynomial_field();
+  out.points.push_back(nominal.front());
   for (std::size_t j = 0; j + 1 < nominal.size(); ++j) {
-    const NominalPoint& p0 = nominal[j];
-    const NominalPoint& p1 = nominal[j + 1];
-    const Vec3 dev0 = z.omega_half_widths();
-    const AprioriEnclosure apriori = a_priori_enclosure(loop, p0, p1, Box3::around(p0.omega, dev0), z.e_R);
-    const ComparisonFlow flow = comparison_flow(comparison_matrix(loop, p0.R, apriori), p1.t - p0.t);
-    const Deviation eps = sub_step_error(field, p0, p1, apriori, term);
-    // Deviations from x*: z(s+h) ≤ exp(Mh) z(s), sup over the sub-step ≤ exp(M⁺h) z(s); from p1
-    // add eps (triangle inequality, componentwise and in d). The factor and 1e-15 cover the
-    // rounding of the 5×5 products.
-    const Deviation::Vector z0 = z.vector();
-    Deviation z1 = Deviation::from_vector(((flow.E * z0).cwiseMax(0.0) + eps.vector()) * (1.0 + 1e-12) +
-                                          Deviation::Vector::Constant(1e-15));
-    const Deviation zsup = Deviation::from_vector((flow.Eplus * z0).cwiseMax(0.0) * (1.0 + 1e-12) +
-                                                  Deviation::Vector::Constant(1e-15));
-    e = Deviation::from_vector(((flow.E * e.vector()).cwiseMax(0.0) + eps.vector()) * (1.0 + 1e-12));
-
-    const TubeSegment seg = segment_enclosure(p0, p1, apriori, eps, dev0, z1, zsup);
-    out.segments.push_back(seg);
-    add_to_hulls(out, seg, nominal.front().R, j == 0);
-    // Deviation at p1; the ω part can also be read off G.
-    z1.e_R = std::min(z1.e_R, apriori.rhoG);
-    z = z1;
+    // Pending sub-steps of [nominal[j], nominal[j+1]], last first, with their bisection depth.
+    std::vector<std::pair<NominalPoint, int>> pending{{nominal[j + 1], 0}};
+    while (!pending.empty()) {
+      const NominalPoint p0 = out.points.back();
+      const auto [p1, depth] = pending.back();
+      std::string failure;
+      bool verification = false;
+      std::optional<SubStep> done = sub_step(loop, field, p0, p1, z, e, term, failure, verification);
+      if (!done) {
+        if (depth >= refine.max_depth || !(refine.integrator_step > 0.0)) {
+          if (verification) throw VerificationFailure(failure);
+          throw EnclosureDiverges(failure);
+        }
+        pending.back().second = depth + 1;
+        pending.emplace_back(mid_point(loop, p0, p1, refine.integrator_step), depth + 1);
+        ++out.bisections;
+        continue;
+      }
+      pending.pop_back();
+      add_to_hulls(out, done->seg, nominal.front().R, out.segments.empty());
+      out.segments.push_back(done->seg);
+      out.points.push_back(p1);
+      z = done->z1;
+      e = done->e1;
+    }
   }
   out.end = z;
   out.nominal_error = e;

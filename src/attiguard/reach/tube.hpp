@@ -24,6 +24,8 @@
 #include <span>
 #include <vector>
 
+#include "attiguard/core/errors.hpp"
+
 #include "attiguard/reach/closed_loop.hpp"
 #include "attiguard/reach/deviation.hpp"
 
@@ -52,6 +54,27 @@ struct TubeResult {
   Deviation nominal_error;
   Box3 omega_hull;                    ///< hull of the segments' ω boxes
   AttitudeBall attitude_hull;         ///< centred at the first nominal point, contains all
+  /// The nominal points the segments run between (segments.size() + 1): the given ones, with
+  /// the mid-points of bisected sub-steps inserted (TubeRefinement).
+  std::vector<NominalPoint> points;
+  int bisections{0};                  ///< sub-steps bisected
+};
+
+/// Sub-step bisection (docs/reach.md, "Adaptive steps"): a sub-step whose a priori enclosure
+/// diverges or whose nominal error cannot be bounded is split in two at its mid-time, the
+/// mid-point simulated from its first point (RKMK4, step ≤ integrator_step), recursively up to
+/// max_depth halvings; then the sub-step's error is thrown. max_depth = 0: no bisection.
+struct TubeRefinement {
+  double integrator_step{0.0};
+  int max_depth{0};
+};
+
+/// The a priori enclosure of a sub-step diverges (tube.hpp, step 1): the set cannot be carried
+/// over it. A NumericalError, so that code which does not handle it stops with exit 3; ConReach
+/// turns it into an unproved interval (conreach.hpp).
+class EnclosureDiverges : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
 };
 
 /// Whether the nominal's integration error ε enters the tube (docs/reach.md, "Nominal error
@@ -59,12 +82,14 @@ struct TubeResult {
 /// that without ε a crafted tube misses the exact solution (issue 15), and no scenario key sets it.
 enum class NominalErrorTerm { bounded, omitted_unsound };
 
-/// Propagates `start` (valid at nominal.front()) along the nominal points (≥ 2, increasing t).
-/// Throws NumericalError when no a priori enclosure is found (diverging tube), and
-/// VerificationFailure when the nominal's integration error cannot be bounded on a sub-step.
+/// Propagates `start` (valid at nominal.front()) along the nominal points (≥ 2, increasing t),
+/// bisecting failing sub-steps as `refine` allows. Throws EnclosureDiverges when no a priori
+/// enclosure is found (diverging tube), and VerificationFailure when the nominal's integration
+/// error cannot be bounded on a sub-step.
 [[nodiscard]] TubeResult propagate_tube(const ClosedLoop& loop, std::span<const NominalPoint> nominal,
                                         const Deviation& start,
-                                        NominalErrorTerm term = NominalErrorTerm::bounded);
+                                        NominalErrorTerm term = NominalErrorTerm::bounded,
+                                        const TubeRefinement& refine = {});
 
 /// exp(M h) for a small square matrix (scaling and squaring, Taylor degree 18).
 [[nodiscard]] Eigen::MatrixXd expm(const Eigen::MatrixXd& M);

@@ -95,9 +95,12 @@ void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reac
   const TableReader r = root.table("reach");
   declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
               "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates",
-              "metric", "rigour"});
+              "metric", "rigour", "max_bisections"});
   s.horizon = r.number("horizon", NumberRule::positive());
-  s.steps = static_cast<int>(r.integer("steps", 1, 100000));
+  // Without `steps` the analysis chooses its step lengths (docs/reach.md, "Adaptive steps").
+  s.adaptive = !r.has("steps");
+  s.steps = s.adaptive ? 1 : static_cast<int>(r.integer("steps", 1, 100000));
+  s.max_bisections = static_cast<int>(r.integer_or("max_bisections", 6, 0, 30));
   // Default (docs/reach.md, "Coupled metrics"): coupled where the closed loop feeds the
   // attitude back (its LMI depends on R: the R–ω coupling is what makes it contract), the
   // paper's product metric otherwise.
@@ -110,10 +113,20 @@ void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reac
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
   s.min_diagonal = r.number_or("min_diagonal", 0.01, NumberRule::non_negative());
   s.substeps = static_cast<int>(r.integer_or("substeps", 10, 1, 10000));
-  s.integrator_step = r.number_or("integrator_step", 1e-3, NumberRule::positive());
+  // Adaptive steps: no integrator_step means 0.02/λ of the loop (conreach.hpp); the fixed grid
+  // keeps its 1 ms default.
+  s.integrator_step = r.number_or("integrator_step", s.adaptive ? 0.0 : 1e-3, NumberRule::positive());
   s.attitude_floor_ratio = r.number_or("attitude_floor_ratio", 0.5, {0.0, 1.0, true, false});
   s.min_enclosure_candidates =
       static_cast<int>(r.integer_or("min_enclosure_candidates", 30, 1, 1000));
+  if (s.adaptive) {
+    if (s.integrator_step > s.horizon) r.fail("integrator_step", "integrator_step must not exceed the horizon");
+    if (s.integrator_step > 0.0) {
+      require_countable(r, "integrator_step", s.integrator_step, s.horizon, kMaxRunSteps,
+                        "integrator steps of the nominal");
+    }
+    return;
+  }
   if (s.integrator_step > s.horizon / s.steps / s.substeps) {
     r.fail(r.has("integrator_step") ? "integrator_step" : "substeps",
            "integrator_step must not exceed horizon/(steps*substeps)");
@@ -125,10 +138,13 @@ void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reac
 /// [partition]: cells per axis and threads, within the cell budget.
 void parse_partition(const TableReader& root, int steps, reach::ReachScenario& sc) {
   if (const auto part = root.optional_table("partition")) {
-    declare(*part, {"attitude_cells", "omega_cells", "threads"});
+    declare(*part, {"attitude_cells", "omega_cells", "threads", "split", "max_cell_steps", "max_seconds"});
     sc.attitude_cells = static_cast<int>(part->integer_or("attitude_cells", 1, 1, 50));
     sc.omega_cells = static_cast<int>(part->integer_or("omega_cells", 1, 1, 50));
     sc.threads = static_cast<int>(part->integer_or("threads", 0, 0, 256));
+    sc.split.enabled = part->boolean_or("split", true);
+    sc.split.max_cell_steps = part->integer_or("max_cell_steps", sc.split.max_cell_steps, 1, 100000000);
+    sc.split.max_seconds = part->number_or("max_seconds", sc.split.max_seconds, NumberRule::positive());
     require_cell_budget(*part, part->has("omega_cells") ? "omega_cells" : "attitude_cells", sc.attitude_cells, sc.omega_cells, steps);
   }
 }
@@ -214,7 +230,7 @@ reach::ReachScenario parse_reach(const Document& doc) {
   sc.loop = parse_system(root.table("system"), sc.model);
   parse_initial(root, sc.initial);
   parse_settings(root, *sc.loop, sc.settings);
-  parse_partition(root, sc.settings.steps, sc);
+  parse_partition(root, sc.settings.adaptive ? 1 : sc.settings.steps, sc);
   parse_soundness(root, sc.settings.horizon, sc.soundness);
   sc.soundness.threads = sc.threads;
   parse_safety(root, sc.safety);

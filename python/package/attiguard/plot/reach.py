@@ -105,7 +105,10 @@ def attitude_plot(run: Run, summary: dict) -> Path:
     ax.set_xlabel("r_x [rad]")
     ax.set_ylabel("r_y [rad]")
     ax.set_zlabel("r_z [rad]")
-    ax.set_title(title(run, f"attitude ball boundaries in exp chart {chart}, samples"))
+    # chart = -1: no single chart holds every ball; each point is in the chart of boundary.csv's
+    # `chart` column (docs/reach.md, "Representation"), the samples in chart 0.
+    where = f"exp chart {chart}" if chart is not None and chart >= 0 else "each point's exp chart"
+    ax.set_title(title(run, f"attitude ball boundaries in {where}, samples"))
     return save(fig, run, "reach_attitude.png")
 
 

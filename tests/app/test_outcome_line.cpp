@@ -133,6 +133,16 @@ TEST(OutcomeLine, ReachNamesTheFirstUnprovedInterval) {
   EXPECT_TRUE(has(line, "2000/2000 sampled trajectories inside")) << line;
   EXPECT_TRUE(has(line, "the ball leaves the keep-in cone")) << line;
 
+  // Several cells: the first cell's unsafe step is named only when it holds the first instant.
+  json split = r;
+  split["first_failure_time"] = 0.25;
+  split["n_steps"] = 3;
+  split["step_mode"] = "adaptive";
+  split["partition"] = {{"cells_split", 1}};
+  const std::string ls = reach_outcome_line(split);
+  EXPECT_TRUE(has(ls, "outcome: cannot_prove (first unproved at t = 0.25 s)")) << ls;
+  EXPECT_TRUE(has(ls, "3 adaptive steps; 27 cells (1 cell split)")) << ls;
+
   const json safe = {{"verdict", "safe"}, {"steps", json::array({{{"t", 0.0}, {"t_end", 1.0}, {"safe", true}, {"r", 0.1}}})}};
   EXPECT_FALSE(has(reach_outcome_line(safe), "unproved")) << reach_outcome_line(safe);
 }

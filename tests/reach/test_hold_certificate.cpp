@@ -85,10 +85,13 @@ TEST(HoldCertificate, TooLargeBallCannotBeProvedExit4AndTheSplittingProvesIt) {
   EXPECT_EQ(j["verdict"], "cannot_prove");
   EXPECT_EQ(j["cells"].get<long>(), 1);
 
+  // The splitting proves it in about 30 s of SDPs in Release; the sanitized build stops here
+  // (ReachAutoSplit and the corpus dozen cover the splitting there).
+  if (attiguard::test::kSanitizedWorkDivisor > 1) return;
   std::string text = attiguard::test::read_file(kSource / scenario);
   const std::size_t at = text.rfind("split = false");
   ASSERT_NE(at, std::string::npos);
-  text.replace(at, 13, "split = true");
+  text.replace(at, 13, "split = true\nmax_seconds = 3600.0");  // the cell-step budget decides
   const auto split = out / "split.toml";
   std::ofstream(split) << text;
   const auto s = attiguard::test::run_cli("reach '" + split.string() + "' --out '" + (out / "s").string() + "'");

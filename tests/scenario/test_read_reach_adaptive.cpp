@@ -31,7 +31,7 @@ TEST(ReadReachAdaptive, WithoutStepsTheAnalysisChoosesItsStepsAndSplitsByDefault
   EXPECT_EQ(sc.settings.max_bisections, 6);
   EXPECT_TRUE(sc.split.enabled);
   EXPECT_EQ(sc.split.max_cell_steps, 10000);
-  EXPECT_EQ(sc.split.max_seconds, 120.0);
+  EXPECT_EQ(sc.split.max_seconds, 60.0);
   const reach::ReachScenario fixed = parse_reach(parse_document(adaptive_reach("steps = 10\n"), "f.toml"));
   EXPECT_FALSE(fixed.settings.adaptive);
   EXPECT_EQ(fixed.settings.integrator_step, 1e-3);

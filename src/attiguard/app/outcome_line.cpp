@@ -247,7 +247,9 @@ std::string reach_outcome_line(const json& reach) {
         if (flag(st, "safe") != false) continue;
         const auto t0 = number(st, "t");
         const auto t1 = number(st, "t_end");
-        if (t0 && t1) {
+        // The first cell's steps: named only when the first unproved instant is in that step.
+        const auto tf = number(reach, "first_failure_time");
+        if (t0 && t1 && (!tf || (*tf >= *t0 && *tf <= *t1))) {
           where += (where.empty() ? "first unproved step [" : ", in step [") + fig(*t0) + ", " +
                    fig(*t1) + "] s";
         }
@@ -267,7 +269,17 @@ std::string reach_outcome_line(const json& reach) {
   }
   const json& adversarial = reach.is_object() && reach.contains("adversarial") ? reach["adversarial"] : json();
   line.part("tightness (claimed/seen attitude spread)", number(adversarial, "attitude_tightness"));
-  if (const long cells = count(reach, "cells"); cells > 1) line.part(std::to_string(cells) + " cells");
+  // The steps and cells used (docs/reach.md, "Adaptive steps", "Automatic splitting").
+  if (const long steps = count(reach, "n_steps"); steps > 0) {
+    const bool adaptive = text(reach, "step_mode", "fixed") == "adaptive";
+    line.part(std::to_string(steps) + (adaptive ? " adaptive steps" : " steps"));
+  }
+  if (const long cells = count(reach, "cells"); cells > 1) {
+    const json& part = reach.is_object() && reach.contains("partition") ? reach["partition"] : json();
+    const long splits = count(part, "cells_split");
+    line.part(std::to_string(cells) + " cells" +
+              (splits > 0 ? " (" + std::to_string(splits) + (splits == 1 ? " cell split)" : " cells split)") : ""));
+  }
   if (reach.is_object() && reach.contains("soundness")) {
     const json& sound = reach["soundness"];
     if (const long samples = count(sound, "samples"); samples > 0) {

@@ -106,7 +106,10 @@ nlohmann::json finals_json(const std::vector<ReachResult>& results) {
 std::string split_summary(const SplitReport& rep, std::size_t leaves) {
   std::ostringstream os;
   os << rep.leaves_unproved << " of " << leaves << " cells unproved after " << rep.cells_split << " splits";
-  if (rep.nominal_violations > 0) os << ", " << rep.nominal_violations << " whose own nominal violates the specification";
+  if (rep.nominal_violations > 0) {
+    os << ", " << rep.nominal_violations << " whose own nominal violates the specification (" << rep.first_violation
+       << ")";
+  }
   if (rep.stalled > 0) os << ", " << rep.stalled << " where smaller cells proved no further";
   if (rep.budget_spent) os << ", work budget spent (" << rep.budget_reason << ")";
   return os.str();
@@ -128,6 +131,7 @@ nlohmann::json partition_json(const ReachScenario& sc, const SplitOutcome& split
           {"leaves_unproved", rep.leaves_unproved},
           {"nominal_violations", rep.nominal_violations},
           {"stalled", rep.stalled},
+          {"first_nominal_violation", rep.first_violation},
           {"cell_steps", rep.cell_steps},
           {"wall_time_s", rep.seconds},
           {"budget", {{"max_cell_steps", sc.split.max_cell_steps}, {"max_seconds", sc.split.max_seconds}}},

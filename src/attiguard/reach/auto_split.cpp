@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/reach/metrics.hpp"
@@ -88,21 +89,58 @@ struct Round {
   std::vector<InitialSet> cells;
   std::vector<int> depth;
   std::vector<double> parent_fail;
+  std::vector<long> family;  ///< cells with the same parent share it (the user's cells: their own)
+  /// Per family of a split round: the parent, its result and depth (the leaf it stays when the
+  /// time budget runs out in its children's round).
+  std::vector<InitialSet> parent_cell;
+  std::vector<ReachResult> parent_result;
+  std::vector<int> parent_depth;
 };
 
-/// The settings the cells run with: with splitting, a cell's analysis ends at its first segment
-/// that cannot prove the specification (the cell is then split or left unproved whatever follows).
+/// The reason step_check gives when the time budget runs out (stopping_settings).
+constexpr std::string_view kTimeBudgetReason = "the time budget ran out";
+
+/// Whether the analysis was stopped by the time budget rather than by its own failure.
+bool stopped_by_time(const ReachResult& res) {
+  return !res.complete && res.stop_reason.starts_with(kTimeBudgetReason);
+}
+
+/// Per family of the round: whether any of its cells is proved or proves further than the parent
+/// (first unproved time later by 10⁻³ T). A family without progress stalled.
+std::vector<bool> family_progress(const Round& round, const std::vector<SafetyVerdict>& verdicts, double horizon) {
+  long families = 0;
+  for (const long f : round.family) families = std::max(families, f + 1);
+  std::vector<bool> progress(static_cast<std::size_t>(families), false);
+  for (std::size_t c = 0; c < round.cells.size(); ++c) {
+    const SafetyVerdict& v = verdicts[c];
+    if (v.proved || v.first_failure_time > round.parent_fail[c] + 1e-3 * horizon) {
+      progress[static_cast<std::size_t>(round.family[c])] = true;
+    }
+  }
+  return progress;
+}
+
+/// The settings the cells run with. With splitting, a cell's analysis ends at its first segment
+/// that cannot prove the specification (the cell is then split or left unproved whatever
+/// follows), and at the first step that ends after the time budget (`deadline`).
 ConReachSettings stopping_settings(const ConReachSettings& settings, const SafetySpec& spec,
-                                   const SplitSettings& split) {
+                                   const SplitSettings& split, std::chrono::steady_clock::time_point deadline) {
   ConReachSettings run_settings = settings;
-  if (!split.enabled || !spec.requested()) return run_settings;
-  run_settings.step_check = [&spec](const ReachStep& st, double& t) {
+  if (!split.enabled) return run_settings;
+  const double budget = split.max_seconds;
+  run_settings.step_check = [&spec, deadline, budget](const ReachStep& st, double& t) {
     for (const TubeSegment& seg : st.state_tube) {
-      const std::string why = violated_by_segment(spec, seg);
+      const std::string why = spec.requested() ? violated_by_segment(spec, seg) : std::string();
       if (why.empty()) continue;
       t = seg.t0;
       std::ostringstream os;
       os << why << " cannot be proved on [" << seg.t0 << ", " << seg.t1 << "] s";
+      return os.str();
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      t = st.t1;
+      std::ostringstream os;
+      os << kTimeBudgetReason << " (max_seconds = " << budget << ")";
       return os.str();
     }
     return std::string();
@@ -117,8 +155,9 @@ void add_leaf(SplitOutcome& out, const Round& round, std::size_t c, ReachResult&
   out.depth.push_back(round.depth[c]);
 }
 
-/// The round's cells that are proved, hopeless (their nominal violates), stalled (no later first
-/// unproved time than their parent's by 10⁻³ T) or at the deepest split become leaves; returns
+/// The round's cells that are proved, hopeless (their nominal violates), stalled (no cell of their
+/// family proved or proving further than the parent, family_progress) or at the deepest split
+/// become leaves; returns
 /// the others, to be split, and each cell's first unproved time in `fail_time`.
 std::vector<std::size_t> settle_round(const ClosedLoop& loop, double horizon, const SafetySpec& spec,
                                       const SplitSettings& split, const Round& round,
@@ -127,19 +166,42 @@ std::vector<std::size_t> settle_round(const ClosedLoop& loop, double horizon, co
   SplitReport& rep = out.report;
   std::vector<std::size_t> to_split;
   fail_time.assign(round.cells.size(), -1.0);
+  // A family of children cut by the time budget gives way to its parent: the children's stop
+  // times say only when the budget ran out, the parent's first unproved time is its own.
+  std::vector<bool> timed_out(round.parent_cell.size(), false);
   for (std::size_t c = 0; c < round.cells.size(); ++c) {
-    const SafetyVerdict v = verify_safety(spec, {results[c]});
+    if (!round.parent_cell.empty() && stopped_by_time(results[c])) {
+      timed_out[static_cast<std::size_t>(round.family[c])] = true;
+    }
+  }
+  for (std::size_t f = 0; f < timed_out.size(); ++f) {
+    if (!timed_out[f]) continue;
+    out.cells.push_back(round.parent_cell[f]);
+    out.results.push_back(round.parent_result[f]);
+    out.depth.push_back(round.parent_depth[f]);
+    ++rep.leaves_unproved;
+    rep.budget_spent = true;
+    std::ostringstream os;
+    os << "max_seconds = " << split.max_seconds << ": the time budget ran out during a round";
+    rep.budget_reason = os.str();
+  }
+  std::vector<SafetyVerdict> verdicts;
+  for (const ReachResult& res : results) verdicts.push_back(verify_safety(spec, {res}));
+  const std::vector<bool> progress = family_progress(round, verdicts, horizon);
+  for (std::size_t c = 0; c < round.cells.size(); ++c) {
+    if (!round.parent_cell.empty() && timed_out[static_cast<std::size_t>(round.family[c])]) continue;
+    const SafetyVerdict& v = verdicts[c];
     fail_time[c] = v.first_failure_time;
     std::string where;
     const bool hopeless = !v.proved && split.enabled && nominal_violates(loop, round.cells[c], horizon, spec, where);
-    const bool stalled = !v.proved && split.enabled && !hopeless &&
-                         !(v.first_failure_time > round.parent_fail[c] + 1e-3 * horizon);
+    const bool stalled = !v.proved && split.enabled && !hopeless && !progress[static_cast<std::size_t>(round.family[c])];
     const bool deepest = round.depth[c] >= split.max_depth;
     if (!v.proved && split.enabled && !hopeless && !stalled && !deepest) {
       to_split.push_back(c);
       continue;
     }
     rep.nominal_violations += hopeless ? 1 : 0;
+    if (hopeless && rep.first_violation.empty()) rep.first_violation = where;
     rep.stalled += stalled ? 1 : 0;
     if (!v.proved) ++rep.leaves_unproved;
     if (!v.proved && deepest && !hopeless && !stalled && split.enabled && !rep.budget_spent) {
@@ -155,12 +217,18 @@ std::vector<std::size_t> settle_round(const ClosedLoop& loop, double horizon, co
 Round children_of(const Round& round, const std::vector<std::size_t>& to_split,
                   const std::vector<ReachResult>& results, const std::vector<double>& fail_time) {
   Round next;
+  long family = 0;
   for (const std::size_t c : to_split) {
     for (const InitialSet& child : split_cell(round.cells[c], split_attitude_first(round.cells[c], results[c]))) {
       next.cells.push_back(child);
       next.depth.push_back(round.depth[c] + 1);
       next.parent_fail.push_back(fail_time[c]);
+      next.family.push_back(family);
     }
+    next.parent_cell.push_back(round.cells[c]);
+    next.parent_result.push_back(results[c]);
+    next.parent_depth.push_back(round.depth[c]);
+    ++family;
   }
   return next;
 }
@@ -176,9 +244,12 @@ SplitOutcome run_with_splitting(const ClosedLoop& loop, const std::vector<Initia
   };
   SplitOutcome out;
   SplitReport& rep = out.report;
-  const ConReachSettings run_settings = stopping_settings(settings, spec, split);
+  const auto deadline = wall0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(std::min(split.max_seconds, 1e9)));
+  const ConReachSettings run_settings = stopping_settings(settings, spec, split, deadline);
   Round round{cells, std::vector<int>(cells.size(), 0),
-              std::vector<double>(cells.size(), -std::numeric_limits<double>::infinity())};
+              std::vector<double>(cells.size(), -std::numeric_limits<double>::infinity()), {}, {}, {}, {}};
+  for (std::size_t c = 0; c < cells.size(); ++c) round.family.push_back(static_cast<long>(c));
   while (!round.cells.empty()) {
     const double round_start = elapsed();
     std::vector<ReachResult> results = run_partitioned(loop, round.cells, run_settings, threads, world);

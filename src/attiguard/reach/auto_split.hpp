@@ -6,9 +6,9 @@
 /// ball, whichever contributes more to its first metric ball, into the 27 cells of
 /// partition_initial_set with 3 per axis (radius ×1/√3) — and the children are analysed, round
 /// after round, until every cell is proved or the work budget is spent. A cell whose own
-/// nominal trajectory violates the specification is not split: no partition can prove it; nor is
-/// a child whose first unproved time is not later than its parent's by 10⁻³ T (the splitting
-/// stalled there: the looseness is not the set's size).
+/// nominal trajectory violates the specification is not split: no partition can prove it; nor are
+/// the children of a cell when none of them is proved or proves further than their parent (first
+/// unproved time later by 10⁻³ T): the splitting stalled there.
 
 #include <string>
 #include <vector>
@@ -23,7 +23,7 @@ namespace attiguard::reach {
 struct SplitSettings {
   bool enabled{true};
   long max_cell_steps{10000};  ///< ConReach steps summed over every cell analysed
-  double max_seconds{120.0};   ///< wall time of the analysis [s]
+  double max_seconds{60.0};    ///< wall time of the analysis [s]
   int max_depth{4};            ///< most successive splits of one cell
 };
 
@@ -39,7 +39,8 @@ struct SplitReport {
   std::string budget_reason;   ///< which budget, with the figures
   long leaves_unproved{0};
   long nominal_violations{0};  ///< leaves not split because their nominal violates the spec
-  long stalled{0};             ///< leaves not split because they proved no further than their parent
+  std::string first_violation;  ///< the first of them: constraint and time on its nominal
+  long stalled{0};             ///< leaves not split because their family proved no further than its parent
 };
 
 /// The leaves of the final partition: they cover the initial set; results[i] is cells[i]'s.

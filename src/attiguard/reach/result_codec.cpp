@@ -1,6 +1,7 @@
 #include "attiguard/reach/result_codec.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -55,13 +56,15 @@ std::vector<T> records_of(const json& a, const Decode& decode) {
   return out;
 }
 
-json segment_json(const TubeSegment& g) { return {g.t0, g.t1, ball(g.attitude), box(g.omega)}; }
+json segment_json(const TubeSegment& g) { return {g.t0, g.t1, ball(g.attitude), box(g.omega), g.omega_norm}; }
 TubeSegment segment_from(const json& g) {
   TubeSegment seg;
   seg.t0 = g.at(0).get<double>();
   seg.t1 = g.at(1).get<double>();
   ball(g.at(2), seg.attitude);
   box(g.at(3), seg.omega);
+  // +∞ (no bound computed) travels as null through JSON/CBOR.
+  seg.omega_norm = g.at(4).is_null() ? std::numeric_limits<double>::infinity() : g.at(4).get<double>();
   return seg;
 }
 

@@ -25,7 +25,7 @@ std::string violated_by_segment(const SafetySpec& spec, const TubeSegment& seg) 
     if (!(seg.omega.abs_max().array() < spec.omega_abs_max->array()).all()) return "omega_abs_max";
   }
   if (spec.omega_norm_max) {
-    if (!(seg.omega.norm_max() < *spec.omega_norm_max)) return "omega_norm_max";
+    if (!(seg.omega_norm_bound() < *spec.omega_norm_max)) return "omega_norm_max";
   }
   return {};
 }

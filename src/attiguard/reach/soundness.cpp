@@ -1,5 +1,6 @@
 #include "attiguard/reach/soundness.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -89,8 +90,9 @@ void check_tube_at(const ReachResult& res, const PointIndex& ix, std::size_t k, 
     if (g >= ix.segment.size()) continue;  // k − 1 wraps for k = 0
     const ReachStep& st = res.steps[ix.segment[g].first];
     const TubeSegment& seg = st.state_tube[ix.segment[g].second];
-    const double ex = std::max(excess(seg.attitude, seg.omega, Rk, wk),
-                               excess(st.attitude_box, st.omega_box, Rk, wk));
+    const double ex = std::max({excess(seg.attitude, seg.omega, Rk, wk),
+                                excess(st.attitude_box, st.omega_box, Rk, wk),
+                                wk.norm() - seg.omega_norm_bound() * (1.0 + kRoundoff) - kRoundoff});
     if (!(ex <= 0.0) && out.tube_violation < 0.0) out.tube_violation = t;
     out.worst_excess = std::max(out.worst_excess, std::isfinite(ex) ? ex : 1e300);
   }

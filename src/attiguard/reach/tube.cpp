@@ -154,6 +154,8 @@ TubeSegment segment_enclosure(const NominalPoint& p0, const NominalPoint& p1,
   seg.t0 = p0.t;
   seg.t1 = p1.t;
   seg.omega = nom.inflated(devsup).intersect(apriori.G).intersect(set_tent);
+  // ‖ω‖ ≤ ‖ω*(t)‖ + ‖ω − ω*(t)‖ ≤ max over the tent of x* + sup e_ω (deviations are from x*).
+  seg.omega_norm = (nom.norm_max() + zsup.e_omega_b) * (1.0 + 1e-12);
   seg.attitude = {p0.R, std::min(apriori.rhoG, zsup.e_R + h * nom.norm_max() + 1e-12)};
   return seg;
 }

@@ -21,6 +21,8 @@
 /// so the tube, U_i and the ball radii rest on no integration-error allowance.
 /// docs/reach.md ("Enclosure U_i", "Nominal error bound") gives the proofs.
 
+#include <algorithm>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -44,6 +46,12 @@ struct TubeSegment {
   double t1{0.0};
   AttitudeBall attitude;
   Box3 omega;
+  /// Bound on ‖ω‖ over the segment, tighter than the box's corner: max‖ω*‖ over the tent of x*
+  /// plus the sup of the Euclidean deviation e_ω (tube.hpp, step 3); +∞ when not computed (the box
+  /// then bounds it).
+  double omega_norm{std::numeric_limits<double>::infinity()};
+  /// min(‖ω‖ bound, the box's norm_max): what the ω-norm safety check uses.
+  [[nodiscard]] double omega_norm_bound() const { return std::min(omega_norm, omega.norm_max()); }
 };
 
 struct TubeResult {

@@ -11,6 +11,8 @@
 
 #include "attiguard/core/errors.hpp"
 #include "attiguard/reach/metrics.hpp"
+#include "attiguard/reach/proved_radii.hpp"
+#include "attiguard/reach/scalar_interval.hpp"
 
 namespace attiguard::reach {
 
@@ -183,13 +185,12 @@ double enclosure_radius(const StateMetric& m, double r) {
 }
 
 /// Deviation bounds (deviation.hpp) of every state in B_M(x, r): the projections of coupled
-/// facts 2, 3.
+/// facts 2, 3, proved for the floats (proved_radii.hpp).
 Deviation ball_deviation(const StateMetric& m, double r) {
-  const Mat3 Pw = omega_schur(m);
   Deviation d;
-  d.d_omega_b = p_ball_half_widths(Pw, r);
-  d.e_omega_b = r / std::sqrt(lambda_min(Pw));
-  d.e_R = r / std::sqrt(lambda_min(attitude_schur(m)));
+  d.d_omega_b = proved_omega_half_widths(m, r);
+  d.e_omega_b = proved_projection_radius(m, r, StateBlock::omega);
+  d.e_R = proved_projection_radius(m, r, StateBlock::attitude);
   return d;
 }
 
@@ -214,7 +215,7 @@ struct StepGrid {
 /// Coupled metric, step 0: the radius r_0' = metric_cover_radius(M_1, a, b) of the initial set
 /// re-expressed in the step's own metric (docs/reach.md, "Coupled metrics").
 double recovered_radius(const RunFrame& f, const MetricSolution& sol) {
-  return metric_cover_radius({sol.Q, sol.S, sol.P}, f.a, f.b);
+  return proved_cover_radius({sol.Q, sol.S, sol.P}, f.a, f.b);
 }
 
 /// The deviation the LMI tube U_i starts from: the flowed curves — coupled: at step 0 the
@@ -231,7 +232,8 @@ Deviation lmi_deviation(const RunFrame& f, int i, const Deviation& z_state, cons
       z_lmi.d_omega_b = ball.d_omega_b;
       z_lmi.e_omega_b = ball.e_omega_b;
     }
-    if (f.att_dep) z_lmi.e_R = r / std::sqrt(q_floor);
+    // rounding site: lmi-attitude-floor — r/√q_floor rounded up (q_floor ≤ λ_min(Q) is proved).
+    if (f.att_dep) z_lmi.e_R = radius_over_sqrt_up(r, q_floor);
   }
   return z_lmi;
 }
@@ -302,8 +304,9 @@ StepChoice choose_step_metric(const RunFrame& f, const ReachStep& st, const Step
     out.choice = choose_step(enc, M, s, sdp, size_of, c_prev, st);
     out.lmi_exact = enc.exact;
     out.lmi_rho = enc.rho;
-    const double lq = lambda_min(out.choice.sol.Q);
-    if (f.coupled || !f.att_dep || lq >= q_floor * (1.0 - 1e-9)) break;
+    // λ_min(Q) ≥ q_floor must hold for the floats: the proved lower bound decides.
+    const double lq = proved_schur_lower({out.choice.sol.Q, Mat3::Zero(), out.choice.sol.P}, StateBlock::attitude);
+    if (f.coupled || !f.att_dep || lq >= q_floor) break;
     if (pass == 1) throw NumericalError("ConReach: attitude enclosure of the metric ball is inconsistent");
     q_floor = lq * (1.0 - 1e-9);  // fallback metric below the floor: redo U_i with its λ_min
   }
@@ -332,15 +335,18 @@ void record_choice(ReachStep& st, const StepChoice& chosen) {
 /// metric. The ball's centre is the computed nominal point; the exact trajectory from the previous
 /// centre ends within d_I ≤ e_R, ‖Δω‖ ≤ e_ω of it (tube.hpp), so in M within
 /// metric_cover_radius(M, e_R, e_ω) (docs/reach.md, "Nominal error bound").
-void close_step(ReachStep& st, const Deviation& e, double r, double dt, const NominalPoint& end) {
+/// Every radius is proved for the floats (proved_radii.hpp); the growth uses the exact length of
+/// [t_i, t_{i+1}] (the floats t0, t1), bounded on the side that makes e^{cΔt} larger.
+void close_step(ReachStep& st, const Deviation& e, double r, double t0, double t1, const NominalPoint& end) {
   st.nominal_error_R = e.e_R;
   st.nominal_error_omega = e.e_omega_b;
-  st.numerical_allowance = metric_cover_radius(st.metric(), e.e_R, e.e_omega_b) * (1.0 + 1e-12);
-  st.r = r * std::exp(st.c * dt) + st.numerical_allowance;
+  st.numerical_allowance = proved_cover_radius(st.metric(), e.e_R, e.e_omega_b);
+  const double dt = st.c >= 0.0 ? Interval::up(t1 - t0) : Interval::down(t1 - t0);
+  st.r = proved_ball_growth(r, st.c, dt, st.numerical_allowance);
   st.R = end.R;
   st.omega = end.omega;
-  st.attitude_radius = attitude_enclosure_radius(attitude_schur(st.metric()), st.r);
-  st.omega_half_widths = p_ball_half_widths(omega_schur(st.metric()), st.r);
+  st.attitude_radius = proved_projection_radius(st.metric(), st.r, StateBlock::attitude);
+  st.omega_half_widths = proved_omega_half_widths(st.metric(), st.r);
   if (!std::isfinite(st.r) || !st.Q.allFinite() || !st.P.allFinite() || !st.S.allFinite()) {
     std::ostringstream os;
     os << "ConReach: non-finite ball at t = " << st.t1 << " s";
@@ -407,7 +413,7 @@ StepAttempt reach_step(const RunFrame& f, int i, const StepGrid& grid, const Nom
     out.recovered = true;
     out.r0 = r;
   }
-  close_step(st, start.state_tube.nominal_error, r, grid.dt, out.points.back());
+  close_step(st, start.state_tube.nominal_error, r, grid.times.front(), grid.times.back(), out.points.back());
   return out;
 }
 
@@ -581,8 +587,9 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   ReachResult res;
   res.initial = initial;
   res.P0 = initial.P0;
-  res.r0 = std::sqrt(initial.attitude_radius * initial.attitude_radius +
-                     lambda_max(initial.P0) * initial.omega_radius * initial.omega_radius);
+  // The initial set B_I(R0, a) × B(ω0, b) in the product metric (I, P0): √(a² + λ_max(P0) b²), proved.
+  res.r0 = proved_cover_radius({Mat3::Identity(), Mat3::Zero(), initial.P0}, initial.attitude_radius,
+                               initial.omega_radius);
   res.nominal.push_back({0.0, initial.R0, initial.omega0});
   const RunFrame frame{loop, s, initial.attitude_radius, initial.omega_radius,
                        s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude()};

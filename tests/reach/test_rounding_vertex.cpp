@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <vector>
 
 #include "attiguard/lie/so3.hpp"
 #include "attiguard/reach/closed_loop.hpp"
@@ -93,7 +94,7 @@ TEST(RoundingVertex, InverseEnclosureContainsTheExactInverseTheFloatInverseMisse
 }
 
 TEST(RoundingVertex, LmiProvedAtTheFloatVertexButFalseForTheTrueDataIsRefused) {
-  // rounding site: vertex-data. The PD loop with an ill-conditioned J at ω = 0, R = R_g (ρ = 0):
+  // rounding site: vertex-data. The PD loop with an ill-conditioned J at ω = 0, R = R_g (radius 0):
   // A = B = −J⁻¹. Between the rate threshold c*_f of the float data and c*_t of the exact data,
   // the LMI holds for the float numbers and fails for the true ones.
   std::optional<std::uint64_t> found;
@@ -111,21 +112,29 @@ TEST(RoundingVertex, LmiProvedAtTheFloatVertexButFalseForTheTrueDataIsRefused) {
   const ar::Mat3 J = rvt::ill_conditioned_inertia(*found);
   const ar::PdLoop loop(J, 1.0, 1.0, ar::Mat3::Identity());
   const ar::LmiEnclosure enc = loop.lmi_enclosure({ar::Mat3::Identity(), 0.0}, ar::Box3{});
-  ASSERT_EQ(enc.rho, 0.0);
+  // ρ only covers the float centre's orthogonality defect (~1e-16, times ‖J⁻¹‖ ≈ 1e6).
+  ASSERT_GT(enc.rho, 0.0);
+  ASSERT_LT(enc.rho, 1e-6);
+  const std::vector<double> mu(enc.vertices.size(), 1e9);  // μρ² and 1/μ both ≤ 1e-9
   const double c = static_cast<double>(0.5L * (cf + ct));
   // The statement is wrong: the exact LMI at c has a positive eigenvalue.
   EXPECT_GT(rvt::lmi_lambda_max(rvt::true_inverse(J), c), 0.0L);
-  // Round-to-nearest (the vertex data as exact numbers) proves it.
+  // Round-to-nearest (the vertex data as exact numbers, ρ = 2 sin(0) = 0) proves it.
   ar::LmiEnclosure unrounded = enc;
+  unrounded.rho = 0.0;
   for (ar::LmiVertex& v : unrounded.vertices) {
     v.A_rad.setZero();
     v.B_rad.setZero();
   }
   const ar::Mat3 I = ar::Mat3::Identity();
   EXPECT_TRUE(ar::prove_contraction_lmi(unrounded, I, I, c, {}).proved);
-  // The vertex radii refuse it, and prove a rate comfortably above the exact threshold.
-  EXPECT_FALSE(ar::prove_contraction_lmi(enc, I, I, c, {}).proved);
-  EXPECT_TRUE(ar::prove_contraction_lmi(enc, I, I, static_cast<double>(ct * (1.0L + 1e-6L)), {}).proved);
+  // The vertex radii refuse it (with or without ρ), and prove a rate comfortably above the
+  // exact threshold.
+  EXPECT_FALSE(ar::prove_contraction_lmi(enc, I, I, c, mu).proved);
+  ar::LmiEnclosure radii_only = enc;
+  radii_only.rho = 0.0;
+  EXPECT_FALSE(ar::prove_contraction_lmi(radii_only, I, I, c, {}).proved);
+  EXPECT_TRUE(ar::prove_contraction_lmi(enc, I, I, static_cast<double>(ct * (1.0L + 1e-6L)), mu).proved);
 }
 
 TEST(RoundingVertex, ChordIsRoundedUpWhereTheFloatSineIsBelowTheTruth) {

@@ -58,27 +58,34 @@ IMat3 b_at(const std::array<IntervalMat3, 3>& G, const IntervalMat3& Jinv, doubl
   return add<3>(g, scaled<3>(Interval(kd), to_imat(Jinv)), -1.0);
 }
 
-/// Bounds on the change of E = Rᵀ R_g over R = R_c exp(η̂), ‖η‖ ≤ ρ: ‖ΔE‖₂ ≤ s and
-/// |Δ tr E| ≤ dtr, for the floating-point R_c (not exactly a rotation) and R_g.
+/// Bounds on the change of E = Rᵀ R_g from E_c = R_cᵀ R_g over the ball: ‖ΔE‖₂ ≤ s and
+/// |Δ tr E| ≤ dtr. The floating-point R_c and R_g need not be rotations; the ball is read as
+/// {U exp(η̂) : ‖η‖ ≤ ρ}, U the polar factor of R_c (as the safety check reads it, safety.cpp).
 struct EDeviation {
   double s{0.0};
   double dtr{0.0};
 };
 
-EDeviation e_deviation(const IMat3& Ec, double rho) {
+EDeviation e_deviation(const Mat3& Rc, const Mat3& Rg, double rho) {
   // rounding site: a-deviation
-  // ΔE = (exp(−η̂) − I) E_c, ‖exp(−η̂) − I‖₂ ≤ ch, ‖exp(−η̂) − I‖_F ≤ √2 ch, ch = 2 sin(ρ/2).
-  // E_c = U + D with U its (orthogonal) polar factor, ‖D‖_F ≤ e = ‖E_cᵀE_c − I‖_F and
-  // ‖E_c‖₂ ≤ 1 + e. tr((exp(−η̂) − I)U) = ±Δ(1 + 2 cos θ), |Δθ| ≤ ρ, so ≤ 2ρ; the D part is
-  // ≤ √2 ch e (Cauchy–Schwarz); or the whole trace ≤ √2 ch ‖E_c‖_F.
+  // ΔE = (Q − I) UᵀR_g + (U − R_c)ᵀR_g, Q = exp(−η̂): ‖Q − I‖₂ ≤ ch = 2 sin(ρ/2),
+  // ‖Q − I‖_F ≤ √2 ch. ‖U − R_c‖_F ≤ e_c = ‖R_cᵀR_c − I‖_F and R_g = V_g + D_g, V_g orthogonal,
+  // ‖D_g‖_F ≤ e_g, ‖R_g‖₂ ≤ 1 + e_g. tr((Q − I)UᵀV_g) = ±Δ(1 + 2 cos θ), |Δθ| ≤ ρ: ≤ 2ρ;
+  // tr((Q − I)UᵀD_g) ≤ √2 ch e_g (Cauchy–Schwarz), or the whole ≤ √2 ch ‖R_g‖_F;
+  // |tr D'| ≤ √3 ‖D'‖_F, ‖D'‖_F ≤ e_c (1 + e_g).
+  const IMat3 Rgi = point<3>(Rg);
   const Interval ch(chord_up(rho));
-  const Interval e(orthogonality_defect_up(Ec));
+  const Interval eg(orthogonality_defect_up(Rgi));
+  const Interval ec(orthogonality_defect_up(point<3>(Rc)));
+  const Interval one(1.0);
   const Interval sqrt2(sqrt_down(2.0), sqrt_up(2.0));
+  const Interval sqrt3(sqrt_down(3.0), sqrt_up(3.0));
+  const Interval dprime = ec * (one + eg);
   EDeviation d;
-  d.s = (ch * (Interval(1.0) + e)).hi;
-  const double via_rho = (Interval(2.0) * Interval(rho) + sqrt2 * ch * e).hi;
-  const double via_frobenius = (sqrt2 * ch * Interval(frobenius_up<3>(Ec))).hi;
-  d.dtr = std::min(via_rho, via_frobenius);
+  d.s = (ch * (one + eg) + dprime).hi;
+  const double via_rho = (Interval(2.0) * Interval(rho) + sqrt2 * ch * eg).hi;
+  const double via_frobenius = (sqrt2 * ch * Interval(frobenius_up<3>(Rgi))).hi;
+  d.dtr = (Interval(std::min(via_rho, via_frobenius)) + sqrt3 * dprime).hi;
   return d;
 }
 
@@ -256,17 +263,15 @@ PdCentre pd_centre(const Mat3& Rc, const Mat3& Rg, const IntervalMat3& Jinv, dou
 }  // namespace
 
 IntervalMat3 PdLoop::A_enclosure(const AttitudeBall& att, const Box3&) const {
-  // R = R_c exp(η̂), ‖η‖ ≤ ρ: ‖ΔE‖₂ ≤ s, |Δ tr E| ≤ dtr (e_deviation), so
+  // R = U exp(η̂), ‖η‖ ≤ ρ (U the polar factor of R_c): ‖ΔE‖₂ ≤ s, |Δ tr E| ≤ dtr (e_deviation), so
   // |ΔA| ≤ (k_p/2)|J⁻¹|(dtr I + s 1) entrywise, about the enclosure of A(R_c).
   // rounding site: a-enclosure
   const PdCentre c = pd_centre(att.center, Rg_, Jinv_, gains_.kp);
-  return inflate(c.A, a_deviation_entrywise(Jinv_, gains_.kp, e_deviation(c.E, att.radius)));
+  return inflate(c.A, a_deviation_entrywise(Jinv_, gains_.kp, e_deviation(att.center, Rg_, att.radius)));
 }
 double PdLoop::a_deviation_bound(const AttitudeBall& att) const {
-  if (att.radius == 0.0) return 0.0;  // a point: A(R) = A(R_c) exactly
   // rounding site: a-deviation
-  const PdCentre c = pd_centre(att.center, Rg_, Jinv_, gains_.kp);
-  const EDeviation d = e_deviation(c.E, att.radius);
+  const EDeviation d = e_deviation(att.center, Rg_, att.radius);
   // ‖ΔA‖₂ ≤ (k_p/2) ‖J⁻¹‖₂ (dtr + s), or the Frobenius norm of the entrywise bound.
   const double spectral =
       (Interval(0.5 * std::abs(gains_.kp)) * Interval(jinv_norm2_) * (Interval(d.dtr) + Interval(d.s))).hi;

@@ -70,7 +70,8 @@ class ClosedLoop {
   [[nodiscard]] virtual Vec3 omega_dot(const Mat3& R, const Vec3& omega) const = 0;
   [[nodiscard]] virtual Mat3 A(const Mat3& R, const Vec3& omega) const = 0;
   [[nodiscard]] virtual Mat3 B(const Mat3& R, const Vec3& omega) const = 0;
-  /// Sound entrywise enclosures over {R : d(R, att.center) ≤ att.radius} × box.
+  /// Sound entrywise enclosures over {R : d(R, att.center) ≤ att.radius} × box, outward-rounded
+  /// (a float centre read through its polar factor; docs/reach.md, "Rounding sites").
   [[nodiscard]] virtual IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const = 0;
   [[nodiscard]] virtual IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const = 0;
   /// LMI data over the same set (see LmiEnclosure).

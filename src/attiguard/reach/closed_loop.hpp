@@ -28,11 +28,15 @@
 
 namespace attiguard::reach {
 
-/// One vertex of the LMI data: (ω_v, A_v, B_v).
+/// One vertex of the LMI data: (ω_v, A_v, B_v) and entrywise radii such that the exact
+/// (A, B) the vertex stands for lie in [A_v ± A_rad] × [B_v ± B_rad] (the rounding of the
+/// floating-point computation of A_v, B_v; docs/reach.md, "Rounding sites"). ω_v is exact.
 struct LmiVertex {
   Vec3 omega{Vec3::Zero()};
   Mat3 A{Mat3::Zero()};
   Mat3 B{Mat3::Zero()};
+  Mat3 A_rad{Mat3::Zero()};
+  Mat3 B_rad{Mat3::Zero()};
 };
 
 /// What the contraction LMI [ConReach eq. (10)] must hold for, over a set U: for every (R, ω) ∈ U there are
@@ -47,6 +51,16 @@ struct LmiEnclosure {
   bool exact{false};
 };
 
+/// A verified enclosure of J⁻¹ for a nonsingular J (docs/reach.md, "Rounding sites"): X the
+/// floating-point inverse, E = I − JX in interval arithmetic, and
+/// ‖J⁻¹ − X‖_∞ ≤ ‖X‖_∞‖E‖_∞ / (1 − ‖E‖_∞) added to every entry. Throws NumericalError when
+/// ‖E‖_∞ ≥ ½ (J too ill-conditioned for the bound).
+[[nodiscard]] IntervalMat3 enclose_inverse(const Mat3& J);
+/// An upper bound of ‖J⁻¹‖₂ = 1/λ_min(J) for a symmetric positive definite J (docs/reach.md,
+/// "Rounding sites"): 1/μ for a μ slightly below the floating-point λ_min with μI ≺ J proved in
+/// interval arithmetic (lmi_proof.hpp), or the Frobenius norm of enclose_inverse(J) when smaller.
+[[nodiscard]] double inverse_spectral_bound(const Mat3& J);
+
 /// A closed loop X_ω with analytic A, B and their enclosures.
 class ClosedLoop {
  public:
@@ -56,7 +70,8 @@ class ClosedLoop {
   [[nodiscard]] virtual Vec3 omega_dot(const Mat3& R, const Vec3& omega) const = 0;
   [[nodiscard]] virtual Mat3 A(const Mat3& R, const Vec3& omega) const = 0;
   [[nodiscard]] virtual Mat3 B(const Mat3& R, const Vec3& omega) const = 0;
-  /// Sound entrywise enclosures over {R : d(R, att.center) ≤ att.radius} × box.
+  /// Sound entrywise enclosures over {R : d(R, att.center) ≤ att.radius} × box, outward-rounded
+  /// (a float centre read through its polar factor; docs/reach.md, "Rounding sites").
   [[nodiscard]] virtual IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const = 0;
   [[nodiscard]] virtual IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const = 0;
   /// LMI data over the same set (see LmiEnclosure).
@@ -118,7 +133,8 @@ class RigidBodyLoop final : public ClosedLoop {
  private:
   dynamics::RigidBody body_;
   Vec3 tau_;
-  std::array<Mat3, 3> G_;  ///< B(ω) = Σ_k ω_k G_k
+  IntervalMat3 Jinv_;              ///< enclose_inverse(J)
+  std::array<IntervalMat3, 3> G_;  ///< B(ω) = Σ_k ω_k G_k, enclosed
 };
 
 /// PD law [PET-ERG eq. (3)] towards a fixed R_g.
@@ -132,14 +148,17 @@ class PdLoop final : public ClosedLoop {
   [[nodiscard]] IntervalMat3 A_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] IntervalMat3 B_enclosure(const AttitudeBall& att, const Box3& box) const override;
   [[nodiscard]] LmiEnclosure lmi_enclosure(const AttitudeBall& att, const Box3& box) const override;
-  /// Bound on ‖A(R, ·) − A_center‖₂ over the attitude ball (A does not depend on ω).
+  /// Upper bound, valid for the real numbers (outward rounding, docs/reach.md "Rounding sites"), on
+  /// ‖A(R, ·) − A(R_c, ·)‖₂ over the attitude ball (A does not depend on ω).
   [[nodiscard]] double a_deviation_bound(const AttitudeBall& att) const;
 
  private:
   dynamics::RigidBody body_;
   Mat3 Rg_;
   control::PdGains gains_;
-  std::array<Mat3, 3> G_;  ///< gyroscopic part of B: Σ_k ω_k G_k
+  IntervalMat3 Jinv_;              ///< enclose_inverse(J)
+  double jinv_norm2_{0.0};         ///< upper bound of ‖J⁻¹‖₂
+  std::array<IntervalMat3, 3> G_;  ///< gyroscopic part of B: Σ_k ω_k G_k, enclosed
 };
 
 }  // namespace attiguard::reach

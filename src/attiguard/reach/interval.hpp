@@ -72,4 +72,14 @@ struct AttitudeBall {
   return rho >= std::numbers::pi ? 2.0 : 2.0 * std::sin(0.5 * rho);
 }
 
+/// An upper bound of 2 sin(ρ/2) for ρ ≥ 0, valid for the real number ρ: sin of the C library is
+/// taken as accurate to 1 ulp and widened by 2 ulps, and 2 sin(ρ/2) ≤ ρ is used where it is
+/// smaller (docs/reach.md, "Rounding sites").
+[[nodiscard]] inline double chord_up(double rho) noexcept {
+  // rounding site: chord
+  if (rho >= std::numbers::pi) return 2.0;
+  const double s = std::nextafter(std::nextafter(std::sin(0.5 * rho), HUGE_VAL), HUGE_VAL);
+  return std::min(rho, 2.0 * s);
+}
+
 }  // namespace attiguard::reach

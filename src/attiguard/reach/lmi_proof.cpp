@@ -5,46 +5,13 @@
 #include <array>
 #include <cmath>
 
+#include "attiguard/reach/interval_matrix.hpp"
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/scalar_interval.hpp"
 
 namespace attiguard::reach {
 
 namespace {
-
-template <int N>
-using IMat = std::array<std::array<Interval, N>, N>;
-
-template <int N>
-IMat<N> point(const Eigen::Matrix<double, N, N>& M) {
-  IMat<N> out;
-  for (int i = 0; i < N; ++i) {
-    for (int j = 0; j < N; ++j) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = M(i, j);
-  }
-  return out;
-}
-
-template <int N>
-IMat<N> product(const IMat<N>& A, const IMat<N>& B) {
-  IMat<N> out;
-  for (std::size_t i = 0; i < N; ++i) {
-    for (std::size_t j = 0; j < N; ++j) {
-      Interval s(0.0);
-      for (std::size_t k = 0; k < N; ++k) s += A[i][k] * B[k][j];
-      out[i][j] = s;
-    }
-  }
-  return out;
-}
-
-template <int N>
-IMat<N> transposed(const IMat<N>& A) {
-  IMat<N> out;
-  for (std::size_t i = 0; i < N; ++i) {
-    for (std::size_t j = 0; j < N; ++j) out[i][j] = A[j][i];
-  }
-  return out;
-}
 
 /// The Gershgorin-after-congruence proof of the file comment for an interval matrix whose
 /// members are symmetric (S need not be stored symmetric: both triangles are enclosed).
@@ -85,12 +52,24 @@ NegativeDefiniteProof prove_negative_definite(const IMat<N>& S) {
 
 IMat<3> imat(const Mat3& M) { return point<3>(M); }
 
-IMat<3> add(const IMat<3>& A, const IMat<3>& B, double sign = 1.0) {
-  IMat<3> out;
+/// F = [[−ω̂, I], [A, B]] over the vertex's data, A and B widened by their radii.
+IMat<6> vertex_matrix(const LmiVertex& vx) {
+  // rounding site: vertex-data
+  Mat6 Fd = Mat6::Zero();
+  Fd.topLeftCorner<3, 3>() = -lie::hat(vx.omega);
+  Fd.topRightCorner<3, 3>() = Mat3::Identity();
+  Fd.bottomLeftCorner<3, 3>() = vx.A;
+  Fd.bottomRightCorner<3, 3>() = vx.B;
+  IMat<6> F = point<6>(Fd);
   for (std::size_t i = 0; i < 3; ++i) {
-    for (std::size_t j = 0; j < 3; ++j) out[i][j] = sign > 0 ? A[i][j] + B[i][j] : A[i][j] - B[i][j];
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double ra = vx.A_rad(static_cast<int>(i), static_cast<int>(j));
+      const double rb = vx.B_rad(static_cast<int>(i), static_cast<int>(j));
+      F[i + 3][j] = F[i + 3][j] + Interval(-ra, ra);
+      F[i + 3][j + 3] = F[i + 3][j + 3] + Interval(-rb, rb);
+    }
   }
-  return out;
+  return F;
 }
 
 }  // namespace
@@ -103,14 +82,10 @@ NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc, const State
   const Interval two_c = Interval(2.0) * Interval(c);
   for (std::size_t v = 0; v < enc.vertices.size(); ++v) {
     const LmiVertex& vx = enc.vertices[v];
-    // L = MF + FᵀM − 2cM with F = [[−ω̂, I], [A, B]] (contraction_sdp.hpp); the entries of F are
-    // the floating-point numbers of the vertex, so F is a point matrix.
-    Mat6 Fd = Mat6::Zero();
-    Fd.topLeftCorner<3, 3>() = -lie::hat(vx.omega);
-    Fd.topRightCorner<3, 3>() = Mat3::Identity();
-    Fd.bottomLeftCorner<3, 3>() = vx.A;
-    Fd.bottomRightCorner<3, 3>() = vx.B;
-    const IMat<6> F = point<6>(Fd);
+    // L = MF + FᵀM − 2cM with F = [[−ω̂, I], [A, B]] (contraction_sdp.hpp). L is affine in F,
+    // so the interval F of the vertex's data [A_v ± A_rad], [B_v ± B_rad] encloses L for every
+    // (A, B) the vertex stands for.
+    const IMat<6> F = vertex_matrix(vx);
     const IMat<6> MF = product<6>(M, F);
     const IMat<6> FtM = product<6>(transposed<6>(F), Mt);
     IMat<6> S;
@@ -154,7 +129,7 @@ NegativeDefiniteProof prove_less(const Mat6& A, const Mat6& B) {
 }
 
 NegativeDefiniteProof prove_less(const Mat3& A, const Mat3& B) {
-  return prove_negative_definite<3>(add(imat(A), imat(B), -1.0));
+  return prove_negative_definite<3>(add<3>(imat(A), imat(B), -1.0));
 }
 
 }  // namespace attiguard::reach

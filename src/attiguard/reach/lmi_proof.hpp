@@ -26,8 +26,9 @@ struct NegativeDefiniteProof {
 
 /// Proves λ_max(MF_v + F_vᵀM − 2cM + μ_v ρ² I + UUᵀ/μ_v) < 0 at every vertex, U = M[0; I] (the
 /// robust form of contraction_sdp.hpp for the coupled metric M = [[Q, S], [Sᵀ, P]]; μ ignored
-/// when ρ = 0), with M, c, μ and the vertex data taken as the exact values of their
-/// floating-point numbers. `margin` is the worst vertex's.
+/// when ρ = 0), with M, c and μ taken as the exact values of their floating-point numbers and
+/// F over the vertex's interval data [A_v ± A_rad], [B_v ± B_rad] (closed_loop.hpp; docs/reach.md,
+/// "Rounding sites"). `margin` is the worst vertex's.
 [[nodiscard]] NegativeDefiniteProof prove_contraction_lmi(const LmiEnclosure& enc,
                                                           const StateMetric& metric, double c,
                                                           const std::vector<double>& mu);

@@ -44,7 +44,9 @@ struct SafetyVerdict {
 [[nodiscard]] std::string violated_by_state(const SafetySpec& spec, const Mat3& R, const Vec3& omega);
 
 /// Empty when every state of the tube segment is proved to meet the specification, else the
-/// first constraint that cannot be proved (a cone's name, omega_abs_max or omega_norm_max).
+/// first constraint that cannot be proved (a cone's name, omega_abs_max or omega_norm_max). The
+/// cone angles and the ω-norm are compared with outward rounding, the ball read as centred on the
+/// polar factor of the floating-point centre (docs/reach.md, "Rounding sites").
 [[nodiscard]] std::string violated_by_segment(const SafetySpec& spec, const TubeSegment& seg);
 
 /// Checks the state tubes of every result. An analysis that stopped before the horizon

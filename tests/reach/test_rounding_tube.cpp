@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "attiguard/reach/tube.hpp"
 
@@ -168,4 +169,26 @@ TEST(RoundingTube, OmegaNormBoundExceedsTheExactNorm) {
   EXPECT_GT(ar::omega_norm_upper(rtt::point_box({1.0, 0.0, 0.0}), 0x1p-53), 1.0);
   EXPECT_GT(ar::norm_max_upper(rtt::point_box({-1.0, -rtt::tiny27, 0.0})), 1.0);
   EXPECT_EQ(rtt::point_box({1.0, rtt::tiny27, 0.0}).norm_max() + 0.0, 1.0);  // round-to-nearest
+}
+
+TEST(RoundingTube, AttitudeHullDistanceExceedsTheExactAngle) {
+  // I and the rotation by π/2 about z (entries 0, ±1: an exact rotation): d = π/2 exactly,
+  // above the double nearest π/2, which round-to-nearest lie::distance returns.
+  const ar::Mat3 I = ar::Mat3::Identity();
+  ar::Mat3 Rz = ar::Mat3::Zero();
+  Rz << 0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0;
+  const double half_pi = std::numbers::pi / 2.0;  // < π/2: the double π is below π
+  EXPECT_LE(attiguard::lie::distance(I, Rz), half_pi);
+  EXPECT_GT(ar::distance_upper(I, Rz), half_pi);
+  EXPECT_LT(ar::distance_upper(I, Rz), half_pi * (1.0 + 1e-14));
+  // Tight on a small rotation (where acos of the trace would lose half the digits).
+  const double c = std::cos(1e-3);
+  const double s = std::sin(1e-3);
+  ar::Mat3 Rs = ar::Mat3::Identity();
+  Rs(0, 0) = c;
+  Rs(0, 1) = -s;
+  Rs(1, 0) = s;
+  Rs(1, 1) = c;
+  EXPECT_NEAR(ar::distance_upper(I, Rs), 1e-3, 1e-15);
+  EXPECT_GE(ar::distance_upper(I, Rs), attiguard::lie::distance(I, Rs));
 }

@@ -268,6 +268,21 @@ double tent_upper(double a, double b, double lo, double hi, const Interval& h) {
   return -tent_lower(-a, -b, -hi, -lo, h);
 }
 
+double distance_upper(const Mat3& R1, const Mat3& R2) {
+  // rounding site: attitude-hull
+  using namespace tube_rounding;
+  double s = 0.0;
+  for (int i = 0; i < 9; ++i) {
+    const double d = (Interval(R1.data()[i]) - Interval(R2.data()[i])).mag();
+    s = add_up(s, mul_up(d, d));
+  }
+  const double frob = up(std::sqrt(s));
+  const double two_sqrt2_lo = 2.0 * down(std::sqrt(2.0));  // < 2√2 (sqrt correctly rounded)
+  const double ratio = up(frob / two_sqrt2_lo);
+  if (!(ratio < 1.0)) return up(up(up(std::acos(-1.0))));  // π, libm within 1 ulp
+  return 2.0 * up(up(std::asin(ratio)));  // libm's asin within 1 ulp; asin increasing
+}
+
 double omega_norm_upper(const Box3& tent, double e_omega_sup) {
   // rounding site: omega-norm-bound
   return tube_rounding::add_up(norm_max_upper(tent), e_omega_sup);
@@ -369,7 +384,7 @@ TubeSegment segment_enclosure(const NominalPoint& p0, const NominalPoint& p1,
   seg.omega = inflated_outward(nom, devsup).intersect(apriori.G).intersect(set_tent);
   // ‖ω‖ ≤ ‖ω*(t)‖ + ‖ω − ω*(t)‖ ≤ max over the tent of x* + sup e_ω (deviations are from x*).
   // The factor 1 + 1e-12 and the 1e-12 below predate the outward rounding (which makes them
-  // redundant); kept so that the committed example figures stay within their 1e-12 tolerance.
+  // redundant); kept so that the example figures move least.
   seg.omega_norm = omega_norm_upper(nom, zsup.e_omega_b) * (1.0 + 1e-12);
   // rounding site: tent-box (the segment's attitude radius e_R + h·max‖ω*‖, as in step 1)
   seg.attitude = {p0.R, std::min(apriori.rhoG, apriori_attitude_need(zsup.e_R, h, nom) + 1e-12)};
@@ -384,7 +399,9 @@ void add_to_hulls(TubeResult& out, const TubeSegment& seg, const Mat3& R_first, 
   } else {
     out.omega_hull = out.omega_hull.hull(seg.omega);
     out.attitude_hull.radius = std::max(out.attitude_hull.radius,
-                                        lie::distance(R_first, seg.attitude.center) + seg.attitude.radius);
+                                        tube_rounding::add_up(
+                                            distance_upper(R_first, seg.attitude.center),
+                                            seg.attitude.radius));
   }
 }
 
@@ -429,7 +446,7 @@ std::optional<SubStep> sub_step(const ClosedLoop& loop, const PolynomialField& f
   // Deviations from x*: z(s+h) ≤ exp(Mh) z(s), sup over the sub-step ≤ exp(M⁺h) z(s); from p1
   // add eps (triangle inequality, componentwise and in d), all rounded up (apply_upper). The
   // factor and 1e-15 once covered the rounding of the 5×5 products; now redundant, kept so that
-  // the committed example figures stay within their 1e-12 tolerance.
+  // the example figures move least.
   const Deviation::Vector z0 = z.vector();
   const Deviation::Vector none = Deviation::Vector::Zero();
   SubStep out;

@@ -21,7 +21,8 @@
 /// so the tube, U_i and the ball radii rest on no integration-error allowance.
 /// docs/reach.md ("Enclosure U_i", "Nominal error bound") gives the proofs.
 /// Every number of steps 1–3 is computed with outward rounding (docs/reach.md, "Rounding
-/// sites": apriori-box, comparison-matrix, comparison-exp, tent-box, omega-norm-bound); the
+/// sites": apriori-box, comparison-matrix, comparison-exp, tent-box, omega-norm-bound,
+/// attitude-hull); the
 /// functions below the propagation are those sites.
 
 #include <algorithm>
@@ -165,6 +166,13 @@ using Mat5 = Eigen::Matrix<double, 5, 5>;
 /// The upper end: an upper bound of max over t of min(a + t·hi, b − (h − t)·lo) (−tent_lower of
 /// the negated data; docs/reach.md, "Enclosure U_i", step 3).
 [[nodiscard]] double tent_upper(double a, double b, double lo, double hi, const Interval& h);
+
+/// An upper bound of the bi-invariant distance d(R1, R2) = θ of two rotations, with the
+/// floating-point matrices taken as exact rotations: ‖R1 − R2‖_F = 2√2 sin(θ/2), so θ =
+/// 2 asin(‖R1 − R2‖_F / 2√2), the norm rounded up and asin widened by 2 ulps (libm within
+/// 1 ulp); π when the ratio reaches 1. Used for the hull of the segments' attitude balls around
+/// the first nominal point (TubeResult::attitude_hull; docs/reach.md, "Rounding sites").
+[[nodiscard]] double distance_upper(const Mat3& R1, const Mat3& R2);
 
 /// Bound on ‖ω‖ over a segment (TubeSegment::omega_norm; docs/reach.md, "Enclosure U_i",
 /// step 3): max‖ω*‖ over the tent box of x* plus the sup of e_ω, rounded up.

@@ -20,6 +20,10 @@
 /// sub-step, |x*(s+h) − nominal(s+h)| ≤ ε (nominal_error.hpp) — is added at every sub-step end,
 /// so the tube, U_i and the ball radii rest on no integration-error allowance.
 /// docs/reach.md ("Enclosure U_i", "Nominal error bound") gives the proofs.
+/// Every number of steps 1–3 is computed with outward rounding (docs/reach.md, "Rounding
+/// sites": apriori-box, comparison-matrix, comparison-exp, tent-box, omega-norm-bound,
+/// attitude-hull); the
+/// functions below the propagation are those sites.
 
 #include <algorithm>
 #include <limits>
@@ -30,6 +34,7 @@
 
 #include "attiguard/reach/closed_loop.hpp"
 #include "attiguard/reach/deviation.hpp"
+#include "attiguard/reach/scalar_interval.hpp"
 
 namespace attiguard::reach {
 
@@ -99,7 +104,78 @@ enum class NominalErrorTerm { bounded, omitted_unsound };
                                         NominalErrorTerm term = NominalErrorTerm::bounded,
                                         const TubeRefinement& refine = {});
 
-/// exp(M h) for a small square matrix (scaling and squaring, Taylor degree 18).
+/// exp(M h) for a small square matrix (scaling and squaring, Taylor degree 18), in
+/// round-to-nearest: an approximation, not a bound (the tube uses exp_metzler_upper).
 [[nodiscard]] Eigen::MatrixXd expm(const Eigen::MatrixXd& M);
+
+// ---- The tube's rounding sites (docs/reach.md, "Rounding sites"). Each returns a bound for the
+// exact real result of its formula on the floating-point inputs, computed with outward rounding
+// (scalar_interval.hpp: every operation widened by one ulp; sqrt correctly rounded).
+
+/// The comparison system's 5×5 matrices (rows and columns in the order of Deviation::Vector).
+using Mat5 = Eigen::Matrix<double, 5, 5>;
+
+/// The duration p1.t − p0.t of a sub-step as an interval containing the exact difference
+/// (docs/reach.md, "Rounding sites"; the floating-point subtraction may round).
+[[nodiscard]] Interval sub_step_duration(double t0, double t1);
+
+/// An upper bound of the Euclidean norm ‖v‖ (docs/reach.md, "Rounding sites": squares and their
+/// sum rounded up, then the correctly rounded sqrt rounded up).
+[[nodiscard]] double norm_upper(const Vec3& v);
+
+/// An upper bound of max over the box of ‖ω‖ (Box3::norm_max with outward rounding; docs/reach.md,
+/// "Rounding sites").
+[[nodiscard]] double norm_max_upper(const Box3& b);
+
+/// The box b inflated by `by` ≥ 0 on each side, lower ends rounded down and upper ends up
+/// (docs/reach.md, "Enclosure U_i", steps 1 and 3: W_s = ω_n ± d and the tent ± sup deviation).
+[[nodiscard]] Box3 inflated_outward(const Box3& b, const Vec3& by);
+
+/// W + [0, h]·F of the a priori enclosure (docs/reach.md, "Enclosure U_i", step 1), outward
+/// rounded: contains w + t·f for every w ∈ W, f ∈ F and t ∈ [0, h.hi].
+[[nodiscard]] Box3 apriori_span(const Box3& W, const Box3& F, const Interval& h);
+
+/// e_R + h·max_G‖ω‖ rounded up: the attitude radius ρ_G must reach for G to be an a priori
+/// enclosure (docs/reach.md, "Enclosure U_i", step 1), for every duration in h.
+[[nodiscard]] double apriori_attitude_need(double eR, const Interval& h, const Box3& G);
+
+/// The Metzler matrix M of the comparison system ż ≤ M z (docs/reach.md, "Enclosure U_i",
+/// step 2) from interval enclosures A, B of the Jacobians and the a priori ω box G; each entry
+/// an upper bound of its formula: sup B_kk, sup|B_kj|, ‖row_k |A|‖, μ₂(B) ≤ λ_max(Sym B_c) +
+/// ‖rad B‖_F (λ_max proved by lmi_proof.hpp's congruence), ‖|A|‖_F, 1, max_G‖ω‖.
+[[nodiscard]] Mat5 comparison_matrix(const IntervalMat3& A, const IntervalMat3& B, const Box3& G);
+
+/// An entrywise upper bound of exp(M t) for every t ∈ h, M Metzler (docs/reach.md, "Enclosure
+/// U_i", step 2): with P ≥ M t entrywise (rounded up) scaled by 2^-q, P = N − sI with N ≥ 0 and
+/// s ≥ 0, exp(P) = e^{−s} exp(N) ≤ e^{−s}(Σ_{k≤20} N^k/k! + tail), all in upward rounding (every
+/// term nonnegative), the tail ‖N‖^21/21!·1/(1 − ‖N‖/22) added to every entry, e^{−s} widened
+/// by 2 ulps (libm's exp within 1 ulp), then squared q times (monotone on nonnegative matrices).
+[[nodiscard]] Mat5 exp_metzler_upper(const Mat5& M, const Interval& h);
+
+/// E z + a rounded up, for E, z, a ≥ 0 entrywise (docs/reach.md, "Enclosure U_i", step 2, and
+/// "Nominal error bound": z(s+h) ≤ exp(Mh) z(s) + ε).
+[[nodiscard]] Deviation::Vector apply_upper(const Mat5& E, const Deviation::Vector& z,
+                                            const Deviation::Vector& a);
+
+/// A lower bound of min over t ∈ [0, h] of max(a + t·lo, b − (h − t)·hi) for every duration h
+/// in `h`: the lower end of the tent of a C¹ function with values a at 0, b at h and derivative
+/// in [lo, hi] (docs/reach.md, "Enclosure U_i", step 3). Split at the lines' crossing t_s: on
+/// [0, t_s] and [t_s, h] each line is bounded below by its smaller end value (rounded down),
+/// so the result holds for any t_s, and the floating-point t_s only costs tightness.
+[[nodiscard]] double tent_lower(double a, double b, double lo, double hi, const Interval& h);
+/// The upper end: an upper bound of max over t of min(a + t·hi, b − (h − t)·lo) (−tent_lower of
+/// the negated data; docs/reach.md, "Enclosure U_i", step 3).
+[[nodiscard]] double tent_upper(double a, double b, double lo, double hi, const Interval& h);
+
+/// An upper bound of the bi-invariant distance d(R1, R2) = θ of two rotations, with the
+/// floating-point matrices taken as exact rotations: ‖R1 − R2‖_F = 2√2 sin(θ/2), so θ =
+/// 2 asin(‖R1 − R2‖_F / 2√2), the norm rounded up and asin widened by 2 ulps (libm within
+/// 1 ulp); π when the ratio reaches 1. Used for the hull of the segments' attitude balls around
+/// the first nominal point (TubeResult::attitude_hull; docs/reach.md, "Rounding sites").
+[[nodiscard]] double distance_upper(const Mat3& R1, const Mat3& R2);
+
+/// Bound on ‖ω‖ over a segment (TubeSegment::omega_norm; docs/reach.md, "Enclosure U_i",
+/// step 3): max‖ω*‖ over the tent box of x* plus the sup of e_ω, rounded up.
+[[nodiscard]] double omega_norm_upper(const Box3& tent, double e_omega_sup);
 
 }  // namespace attiguard::reach

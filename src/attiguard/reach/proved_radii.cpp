@@ -17,8 +17,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kAttempts = 5;
 double widening(int attempt) { return std::pow(10.0, -12.0 + 2.0 * attempt); }
 
-double down(double x) { return Interval::down(x); }
-double up(double x) { return Interval::up(x); }
+double radii_down(double x) { return Interval::down(x); }
+double radii_up(double x) { return Interval::up(x); }
 
 Mat6 block_selector(StateBlock block, double value) {
   Mat6 E = Mat6::Zero();
@@ -47,9 +47,9 @@ double proved_weighted_max(const Mat6& M, double w_r, double w_w) {
     // The proof is about the floats lam·w as stored: M ≺ diag(fl(λw_R), fl(λw_ω)); so
     // zᵀMz ≤ fl(λw_R)a² + fl(λw_ω)b², bounded above in the caller's weights by dividing back.
     if (prove_less(M, W).proved) {
-      const double scale_r = up(W(0, 0) / w_r);
-      const double scale_w = up(W(3, 3) / w_w);
-      return up(std::max(scale_r, scale_w) * (1.0 + 1e-15)) ;
+      const double scale_r = radii_up(W(0, 0) / w_r);
+      const double scale_w = radii_up(W(3, 3) / w_w);
+      return radii_up(std::max(scale_r, scale_w) * (1.0 + 1e-15)) ;
     }
   }
   return kInf;
@@ -57,7 +57,7 @@ double proved_weighted_max(const Mat6& M, double w_r, double w_w) {
 
 }  // namespace
 
-double radius_over_sqrt_up(double r, double x) { return up(r / down(std::sqrt(x))); }
+double radius_over_sqrt_up(double r, double x) { return radii_up(r / radii_down(std::sqrt(x))); }
 
 double proved_schur_lower(const StateMetric& m, StateBlock block) {
   // rounding site: ball-projection — λ_min of the Schur complement, proved from below.
@@ -89,7 +89,7 @@ Vec3 proved_omega_half_widths(const StateMetric& m, double r) {
       const double h = h_f(k) * (1.0 + widening(attempt));
       if (!(h > 0.0) || !std::isfinite(h)) break;
       const double q = r / h;
-      const double alpha = down(q * q * (1.0 - 4e-16));  // ≤ (r/h)², any positive float works
+      const double alpha = radii_down(q * q * (1.0 - 4e-16));  // ≤ (r/h)², any positive float works
       Mat6 E = Mat6::Zero();
       E(3 + k, 3 + k) = alpha;
       // M ≻ α e eᵀ ⟺ 1 − α eᵀM⁻¹e > 0 (M ≻ 0 follows): r√(eᵀM⁻¹e) < r/√α.
@@ -109,8 +109,8 @@ double proved_cover_radius(const StateMetric& m, double a, double b) {
   double best = kInf;
   auto consider = [&](double th) {
     // w_R a² + w_ω b² ≤ 1: w_R = θ/a², w_ω = (1 − θ)/b², each rounded down.
-    const double w_r = a > 0.0 ? down(down(th) / up(a * a)) : big;
-    const double w_w = b > 0.0 ? down(down(1.0 - th) / up(b * b)) : big;
+    const double w_r = a > 0.0 ? radii_down(radii_down(th) / radii_up(a * a)) : big;
+    const double w_w = b > 0.0 ? radii_down(radii_down(1.0 - th) / radii_up(b * b)) : big;
     if (!(w_r > 0.0) || !(w_w > 0.0)) return;
     const double lam = proved_weighted_max(M, w_r, w_w);
     if (lam < best) best = lam;
@@ -124,14 +124,14 @@ double proved_cover_radius(const StateMetric& m, double a, double b) {
   } else {
     consider(a > 0.0 ? 1.0 : 0.0);
   }
-  return std::isfinite(best) ? up(std::sqrt(best)) : kInf;
+  return std::isfinite(best) ? radii_up(std::sqrt(best)) : kInf;
 }
 
 double proved_ball_growth(double r, double c, double dt, double allowance) {
   // rounding site: ball-growth — r e^{cΔt} + allowance rounded up.
-  const double x = up(c * dt);
-  const double e = up(up(std::exp(x)));
-  return up(up(r * e) + allowance);
+  const double x = radii_up(c * dt);
+  const double e = radii_up(radii_up(std::exp(x)));
+  return radii_up(radii_up(r * e) + allowance);
 }
 
 }  // namespace attiguard::reach

@@ -434,12 +434,7 @@ def measure(args):
 
 # ----------------------------------------------------------------------------- join
 
-def fmt(x, nd=3):
-    if x is None:
-        return "–"
-    if isinstance(x, float):
-        return ("%." + str(nd) + "g") % x
-    return str(x)
+fmt = rc.fmt  # one number formatter for both tables
 
 
 def why_kind(run, outcome):

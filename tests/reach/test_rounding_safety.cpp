@@ -54,6 +54,27 @@ std::optional<double> edge_t(bool over) {
   return std::nullopt;
 }
 
+/// The cone at the edge of the float angle: d = (1, t, 0), a = e_x, θ = atan(t) the true angle,
+/// φ the round-to-nearest one (on the side `over` of θ), α halfway between them.
+struct EdgeCone {
+  ar::Vec3 a{1.0, 0.0, 0.0};
+  ar::Vec3 d;
+  double theta{0.0};
+  double phi_float{0.0};
+  double alpha{0.0};
+};
+
+std::optional<EdgeCone> edge_cone(bool over) {
+  const std::optional<double> t = edge_t(over);
+  if (!t) return std::nullopt;
+  EdgeCone c;
+  c.d = ar::Vec3(1.0, *t, 0.0);
+  c.theta = std::atan(*t);
+  c.phi_float = float_angle(c.a, c.d);
+  c.alpha = 0.5 * (c.theta + c.phi_float);
+  return c;
+}
+
 }  // namespace rounding_safety_test
 
 namespace rst = rounding_safety_test;
@@ -61,13 +82,9 @@ namespace rst = rounding_safety_test;
 TEST(RoundingSafety, KeepOutConeTheRoundedAcosWouldProveIsRefused) {
   // rounding site: cone-angle. The true angle θ = atan(t) is below α, α below the float angle:
   // the keep-out constraint angle ≥ α is violated (ρ = 0: the ball is the point R = I).
-  const std::optional<double> t = rst::edge_t(true);
-  ASSERT_TRUE(t.has_value());
-  const ar::Vec3 a(1.0, 0.0, 0.0);
-  const ar::Vec3 d(1.0, *t, 0.0);
-  const double theta = std::atan(*t);
-  const double phi_float = rst::float_angle(a, d);
-  const double alpha = 0.5 * (theta + phi_float);
+  const std::optional<rst::EdgeCone> c = rst::edge_cone(true);
+  ASSERT_TRUE(c.has_value());
+  const auto& [a, d, theta, phi_float, alpha] = *c;
   ASSERT_LT(theta, alpha);
   ASSERT_LT(alpha, phi_float);
   const ar::SafetySpec spec = rst::cone_spec(a, d, alpha, true);
@@ -81,13 +98,9 @@ TEST(RoundingSafety, KeepOutConeTheRoundedAcosWouldProveIsRefused) {
 TEST(RoundingSafety, KeepInConeTheRoundedAcosWouldProveIsRefused) {
   // rounding site: cone-angle. The float angle is below α, the true angle above it: the keep-in
   // constraint angle ≤ α is violated.
-  const std::optional<double> t = rst::edge_t(false);
-  ASSERT_TRUE(t.has_value());
-  const ar::Vec3 a(1.0, 0.0, 0.0);
-  const ar::Vec3 d(1.0, *t, 0.0);
-  const double theta = std::atan(*t);
-  const double phi_float = rst::float_angle(a, d);
-  const double alpha = 0.5 * (theta + phi_float);
+  const std::optional<rst::EdgeCone> c = rst::edge_cone(false);
+  ASSERT_TRUE(c.has_value());
+  const auto& [a, d, theta, phi_float, alpha] = *c;
   ASSERT_LT(phi_float, alpha);
   ASSERT_LT(alpha, theta);
   const ar::SafetySpec spec = rst::cone_spec(a, d, alpha, false);

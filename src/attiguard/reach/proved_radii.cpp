@@ -2,8 +2,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "attiguard/reach/lmi_proof.hpp"
 #include "attiguard/reach/scalar_interval.hpp"
@@ -32,12 +35,16 @@ double max_eigenvalue(const Mat6& X) {
   return es.eigenvalues()(5);
 }
 
-/// λ proved with M ⪯ λ·diag(w_R I, w_ω I), starting from the double-precision λ_max of
-/// W^{-1/2} M W^{-1/2}; +∞ when no widening proves it.
-double proved_weighted_max(const Mat6& M, double w_r, double w_w) {
+/// The double-precision λ_max of W^{-1/2} M W^{-1/2}, W = diag(w_R I, w_ω I).
+double weighted_max(const Mat6& M, double w_r, double w_w) {
   Eigen::Matrix<double, 6, 1> d;
   d << Vec3::Constant(1.0 / std::sqrt(w_r)), Vec3::Constant(1.0 / std::sqrt(w_w));
-  const double lam_f = max_eigenvalue(d.asDiagonal() * M * d.asDiagonal());
+  return max_eigenvalue(d.asDiagonal() * M * d.asDiagonal());
+}
+
+/// λ proved with M ⪯ λ·diag(w_R I, w_ω I), starting from lam_f = weighted_max(M, w_R, w_ω);
+/// +∞ when no widening proves it.
+double proved_weighted_max(const Mat6& M, double w_r, double w_w, double lam_f) {
   if (!(lam_f > 0.0) || !std::isfinite(lam_f)) return kInf;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     const double lam = lam_f * (1.0 + widening(attempt));
@@ -106,14 +113,16 @@ double proved_cover_radius(const StateMetric& m, double a, double b) {
   const Mat6 M = metric_matrix(m);
   // A zero radius leaves its block's weight free: any large weight dominates M there.
   const double big = 1e6 * (std::abs(max_eigenvalue(M)) + 1.0);
-  double best = kInf;
+  // The weights are scanned in double precision; only the best is proved (the next ones only
+  // when its proof fails).
+  std::vector<std::array<double, 3>> candidates;  // (λ_f, w_R, w_ω)
   auto consider = [&](double th) {
     // w_R a² + w_ω b² ≤ 1: w_R = θ/a², w_ω = (1 − θ)/b², each rounded down.
     const double w_r = a > 0.0 ? radii_down(radii_down(th) / radii_up(a * a)) : big;
     const double w_w = b > 0.0 ? radii_down(radii_down(1.0 - th) / radii_up(b * b)) : big;
     if (!(w_r > 0.0) || !(w_w > 0.0)) return;
-    const double lam = proved_weighted_max(M, w_r, w_w);
-    if (lam < best) best = lam;
+    const double lam_f = weighted_max(M, w_r, w_w);
+    if (lam_f > 0.0 && std::isfinite(lam_f)) candidates.push_back({lam_f, w_r, w_w});
   };
   if (a > 0.0 && b > 0.0) {
     const double lq = lambda_max(m.Q) * a * a;
@@ -124,7 +133,12 @@ double proved_cover_radius(const StateMetric& m, double a, double b) {
   } else {
     consider(a > 0.0 ? 1.0 : 0.0);
   }
-  return std::isfinite(best) ? radii_up(std::sqrt(best)) : kInf;
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [lam_f, w_r, w_w] : candidates) {
+    const double lam = proved_weighted_max(M, w_r, w_w, lam_f);
+    if (std::isfinite(lam)) return radii_up(std::sqrt(lam));
+  }
+  return kInf;
 }
 
 double proved_ball_growth(double r, double c, double dt, double allowance) {

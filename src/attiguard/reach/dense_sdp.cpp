@@ -22,6 +22,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <sstream>
 
 namespace attiguard::reach {
@@ -38,38 +39,109 @@ std::atomic<long> g_dense_sdp_fallback{0};
 /// A term with at most this many non-zero entries (both triangles) is used entry by entry.
 constexpr int kDenseSdpSparseEntries = 4;
 
+template <int N>
+using BlockMat = Eigen::Matrix<double, N, N>;
+template <int N>
+using BlockMap = Eigen::Map<BlockMat<N>>;
+template <int N>
+using ConstBlockMap = Eigen::Map<const BlockMat<N>>;
+
+/// A block's matrix seen with its size fixed at compile time (N = Eigen::Dynamic: as it is).
+template <int N>
+BlockMap<N> fixed(Eigen::MatrixXd& A) {
+  return BlockMap<N>(A.data(), A.rows(), A.cols());
+}
+template <int N>
+ConstBlockMap<N> fixed(const Eigen::MatrixXd& A) {
+  return ConstBlockMap<N>(A.data(), A.rows(), A.cols());
+}
+
+/// Calls f(std::integral_constant<int, N>{}) with N = s for the block sizes compiled fixed (those
+/// of ConReach's LMIs: 3, 6 and 9) and N = Eigen::Dynamic for the others.
+template <class F>
+decltype(auto) with_block_size(int s, F&& f) {
+  switch (s) {
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 9: return f(std::integral_constant<int, 9>{});
+    default: return f(std::integral_constant<int, Eigen::Dynamic>{});
+  }
+}
+
+/// L with L Lᵀ = A (lower triangular, upper triangle zero); false when A is not positive definite
+/// (or not finite). Reads the lower triangle of A.
+template <class MatA, class MatL>
+bool cholesky_lower(const MatA& A, MatL&& L) {
+  const Eigen::Index s = A.rows();
+  for (Eigen::Index j = 0; j < s; ++j) {
+    double d = A(j, j);
+    for (Eigen::Index q = 0; q < j; ++q) d -= L(j, q) * L(j, q);
+    if (!(d > 0.0)) return false;
+    const double ljj = std::sqrt(d);
+    L(j, j) = ljj;
+    for (Eigen::Index i = j + 1; i < s; ++i) {
+      double v = A(i, j);
+      for (Eigen::Index q = 0; q < j; ++q) v -= L(i, q) * L(j, q);
+      L(i, j) = v / ljj;
+    }
+    for (Eigen::Index i = 0; i < j; ++i) L(i, j) = 0.0;
+  }
+  return true;
+}
+
+/// W = L⁻¹ for a lower-triangular L with a positive diagonal (forward substitution).
+template <class MatL, class MatW>
+void lower_inverse(const MatL& L, MatW&& W) {
+  const Eigen::Index s = L.rows();
+  W.setZero();
+  for (Eigen::Index j = 0; j < s; ++j) {
+    W(j, j) = 1.0 / L(j, j);
+    for (Eigen::Index i = j + 1; i < s; ++i) {
+      double v = 0.0;
+      for (Eigen::Index q = j; q < i; ++q) v -= L(i, q) * W(q, j);
+      W(i, j) = v / L(i, i);
+    }
+  }
+}
+
 /// ⟨F, V⟩ for a term, entry by entry when it is sparse.
-template <class TermT>
-double dense_sdp_inner(const TermT& t, const Eigen::MatrixXd& V) {
+template <int N, class TermT, class V>
+double dense_sdp_inner(const TermT& t, const V& v) {
   if (!t.sparse) {
-    return t.F.cwiseProduct(V).sum();
+    return fixed<N>(t.F).cwiseProduct(v).sum();
   }
   double s = 0.0;
   for (std::size_t e = 0; e < t.values.size(); ++e) {
-    s += t.values[e] * V(t.rows[e], t.cols[e]);
+    s += t.values[e] * v(t.rows[e], t.cols[e]);
   }
   return s;
 }
 
 /// M += a F for a term, entry by entry when it is sparse.
-template <class TermT>
-void dense_sdp_axpy(const TermT& t, double a, Eigen::MatrixXd& M) {
+template <int N, class TermT, class Mt>
+void dense_sdp_axpy(const TermT& t, double a, Mt&& m) {
   if (!t.sparse) {
-    M += a * t.F;
+    m += a * fixed<N>(t.F);
     return;
   }
   for (std::size_t e = 0; e < t.values.size(); ++e) {
-    M(t.rows[e], t.cols[e]) += a * t.values[e];
+    m(t.rows[e], t.cols[e]) += a * t.values[e];
   }
 }
 
-/// λ_min of the symmetric N×N matrix T, by Eigen's fixed-size solver (several times faster than
-/// the dynamic one on these sizes).
+/// λ_min of a symmetric block: Eigen's fixed-size solver where N is fixed (several times faster
+/// than the dynamic one on these sizes), the block's preallocated solver otherwise.
 template <int N>
-double dense_sdp_min_eigenvalue(const Eigen::MatrixXd& T) {
-  const Eigen::Matrix<double, N, N> A = T;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> es(A, Eigen::EigenvaluesOnly);
-  return es.eigenvalues()(0);
+double block_min_eigenvalue(const Eigen::MatrixXd& T,
+                            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& eig) {
+  if constexpr (N == Eigen::Dynamic) {
+    eig.compute(T, Eigen::EigenvaluesOnly);
+    return eig.eigenvalues()(0);
+  } else {
+    const BlockMat<N> A = fixed<N>(T);
+    const Eigen::SelfAdjointEigenSolver<BlockMat<N>> es(A, Eigen::EigenvaluesOnly);
+    return es.eigenvalues()(0);
+  }
 }
 
 }  // namespace
@@ -109,16 +181,12 @@ DenseSdpSolver::DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings
       k.terms.push_back(std::move(t));
     }
     for (Eigen::MatrixXd* W : {&k.X, &k.S, &k.Sinv, &k.Rd, &k.dX, &k.dS, &k.dXa, &k.dSa, &k.G,
-                               &k.R, &k.T, &k.U, &k.LX, &k.W}) {
+                               &k.R, &k.T, &k.U, &k.LX, &k.WX, &k.W}) {
       W->setZero(s, s);
     }
     const auto nt = static_cast<Eigen::Index>(k.terms.size());
     k.Gs.setZero(static_cast<Eigen::Index>(s) * s, nt);
     k.Mb.setZero(nt, nt);
-    k.I.setIdentity(s, s);
-    for (Eigen::LLT<Eigen::MatrixXd>* f : {&k.lx, &k.ls, &k.chol}) {
-      *f = Eigen::LLT<Eigen::MatrixXd>(s);
-    }
     k.eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s);
     blocks_.push_back(std::move(k));
   }
@@ -160,43 +228,53 @@ void DenseSdpSolver::initial_point() {
     }
     const double xi = std::max({10.0, std::sqrt(s), s * cx});
     const double eta = std::max({10.0, std::sqrt(s), cz});
-    k.X = xi * k.I;
-    k.S = eta * k.I;
+    k.X = xi * Eigen::MatrixXd::Identity(k.size, k.size);
+    k.S = eta * Eigen::MatrixXd::Identity(k.size, k.size);
     scale_ = std::max({scale_, xi, eta});
   }
+}
+
+/// Block k's part of factor_and_residuals: L_X, L_X⁻¹, W = L_S⁻¹, S⁻¹ = Wᵀ W, Rd = F0 + A*(y) −
+/// S, rp −= A(X) and the sums (false when X or S is not positive definite).
+template <int N>
+bool DenseSdpSolver::factor_block(Block& k, Sums& sums) {
+  const auto X = fixed<N>(k.X);
+  const auto S = fixed<N>(k.S);
+  auto LS = fixed<N>(k.U);
+  if (!cholesky_lower(S, LS) || !cholesky_lower(X, fixed<N>(k.LX))) {
+    return false;
+  }
+  lower_inverse(fixed<N>(k.LX), fixed<N>(k.WX));
+  lower_inverse(fixed<N>(k.U), fixed<N>(k.W));
+  const auto W = fixed<N>(k.W);
+  fixed<N>(k.Sinv).noalias() = W.transpose().lazyProduct(W);
+  auto Rd = fixed<N>(k.Rd);
+  Rd = fixed<N>(k.F0) - S;
+  for (const Term& t : k.terms) {
+    dense_sdp_axpy<N>(t, y_(t.var), Rd);
+    rp_(t.var) -= dense_sdp_inner<N>(t, X);
+  }
+  sums.xs += X.cwiseProduct(S).sum();
+  sums.f0x += fixed<N>(k.F0).cwiseProduct(X).sum();
+  sums.rd2 += Rd.squaredNorm();
+  return true;
 }
 
 /// Cholesky of every X and S (false when one is not positive definite), L_X, W = L_S⁻¹,
 /// S⁻¹ = Wᵀ W, Rd, rp and the measures.
 bool DenseSdpSolver::factor_and_residuals() {
   rp_ = b_;
-  double xs = 0.0;
-  double f0x = 0.0;
-  double rd2 = 0.0;
+  Sums sums;
   for (Block& k : blocks_) {
-    k.ls.compute(k.S);
-    k.lx.compute(k.X);
-    if (k.ls.info() != Eigen::Success || k.lx.info() != Eigen::Success) {
+    if (!with_block_size(k.size, [&](auto n) { return factor_block<decltype(n)::value>(k, sums); })) {
       return false;
     }
-    k.LX = k.lx.matrixL();
-    k.W = k.I;
-    k.ls.matrixL().solveInPlace(k.W);
-    k.Sinv.noalias() = k.W.transpose().lazyProduct(k.W);
-    k.Rd = k.F0 - k.S;
-    for (const Term& t : k.terms) {
-      dense_sdp_axpy(t, y_(t.var), k.Rd);
-      rp_(t.var) -= dense_sdp_inner(t, k.X);
-    }
-    xs += k.X.cwiseProduct(k.S).sum();
-    f0x += k.F0.cwiseProduct(k.X).sum();
-    rd2 += k.Rd.squaredNorm();
   }
   const double dobj = b_.dot(y_);
-  const double denom = 1.0 + std::abs(dobj) + std::abs(f0x);
-  info_.relative_gap = std::max(xs, std::abs(dobj + f0x)) / denom;
+  const double denom = 1.0 + std::abs(dobj) + std::abs(sums.f0x);
+  info_.relative_gap = std::max(sums.xs, std::abs(dobj + sums.f0x)) / denom;
   info_.primal_infeasibility = rp_.norm() / (1.0 + norm_b_);
-  info_.dual_infeasibility = std::sqrt(rd2) / (1.0 + norm_f0_);
+  info_.dual_infeasibility = std::sqrt(sums.rd2) / (1.0 + norm_f0_);
   info_.primal_trace = 0.0;
   for (const Block& k : blocks_) {
     info_.primal_trace += k.X.trace();
@@ -212,37 +290,42 @@ bool DenseSdpSolver::converged(double tol) const noexcept {
 
 /// Adds block k's part of M_ij = ⟨F_i, X F_j S⁻¹⟩ = ⟨G_i, G_j⟩, G_i = W F_i L_X (header
 /// comment), to the lower triangle of M.
+template <int N>
 void DenseSdpSolver::schur_block(Block& k) {
+  constexpr int NN = N == Eigen::Dynamic ? Eigen::Dynamic : N * N;
   const int s = k.size;
   const int nt = static_cast<int>(k.terms.size());
+  const auto W = fixed<N>(k.W);
+  const auto LX = fixed<N>(k.LX);
   for (int i = 0; i < nt; ++i) {
     const Term& t = k.terms[static_cast<std::size_t>(i)];
-    Eigen::Map<Eigen::MatrixXd> G(k.Gs.col(i).data(), s, s);
+    BlockMap<N> G(k.Gs.col(i).data(), s, s);
     if (t.sparse) {  // W F L_X = Σ f (W e_r)(e_cᵀ L_X), W and L_X lower triangular
       G.setZero();
       for (std::size_t e = 0; e < t.values.size(); ++e) {
         const int r = t.rows[e];
         const int c = t.cols[e];
         for (int q = 0; q <= c; ++q) {
-          const double f = t.values[e] * k.LX(c, q);
+          const double f = t.values[e] * LX(c, q);
           for (int p = r; p < s; ++p) {
-            G(p, q) += f * k.W(p, r);
+            G(p, q) += f * W(p, r);
           }
         }
       }
     } else {
-      k.U.noalias() = t.F.lazyProduct(k.LX);
-      G.noalias() = k.W.lazyProduct(k.U);
+      auto U = fixed<N>(k.U);
+      U.noalias() = fixed<N>(t.F).lazyProduct(LX);
+      G.noalias() = W.lazyProduct(U);
     }
   }
-  k.Mb.triangularView<Eigen::Lower>() = k.Gs.transpose().lazyProduct(k.Gs);
   for (int j = 0; j < nt; ++j) {
+    const Eigen::Map<const Eigen::Matrix<double, NN, 1>> gj(k.Gs.col(j).data(), k.Gs.rows());
     const int vj = k.terms[static_cast<std::size_t>(j)].var;
-    for (int i = 0; i < nt; ++i) {
+    for (int i = j; i < nt; ++i) {
+      const Eigen::Map<const Eigen::Matrix<double, NN, 1>> gi(k.Gs.col(i).data(), k.Gs.rows());
       const int vi = k.terms[static_cast<std::size_t>(i)].var;
-      if (vi >= vj) {  // the upper triangle is the lower one's mirror
-        M_(vi, vj) += k.Mb(std::max(i, j), std::min(i, j));
-      }
+      // the lower triangle of M; the upper one is its mirror
+      M_(std::max(vi, vj), std::min(vi, vj)) += gi.dot(gj) * (vi == vj && i != j ? 2.0 : 1.0);
     }
   }
 }
@@ -251,7 +334,7 @@ void DenseSdpSolver::schur_block(Block& k) {
 bool DenseSdpSolver::form_schur() {
   M_.setZero();
   for (Block& k : blocks_) {
-    schur_block(k);
+    with_block_size(k.size, [&](auto n) { schur_block<decltype(n)::value>(k); });
   }
   schur_.compute(M_);  // reads the lower triangle
   // Linearly dependent F_i make M singular: a relative diagonal shift of 1e-12, then 1e-9
@@ -265,60 +348,80 @@ bool DenseSdpSolver::form_schur() {
   return schur_.info() == Eigen::Success;
 }
 
+/// Block k's R = σμ S⁻¹ − X Rd S⁻¹ − G (G = dXa dSa S⁻¹ in the corrector) and h += A(R).
+template <int N>
+void DenseSdpSolver::residual_block(Block& k, double target, bool corrector) {
+  const auto Sinv = fixed<N>(k.Sinv);
+  auto U = fixed<N>(k.U);
+  auto R = fixed<N>(k.R);
+  U.noalias() = fixed<N>(k.X).lazyProduct(fixed<N>(k.Rd));
+  if (corrector) {
+    auto T = fixed<N>(k.T);
+    T.noalias() = fixed<N>(k.dXa).lazyProduct(fixed<N>(k.dSa));
+    fixed<N>(k.G).noalias() = T.lazyProduct(Sinv);
+  }
+  R.noalias() = U.lazyProduct(Sinv);
+  R = target * Sinv - R;
+  if (corrector) {
+    R -= fixed<N>(k.G);
+  }
+  for (const Term& t : k.terms) {
+    h_(t.var) += dense_sdp_inner<N>(t, R);
+  }
+}
+
+/// Block k's dS = Rd + A*(dy) and dX = sym(σμ S⁻¹ − G − X dS S⁻¹) − X.
+template <int N>
+void DenseSdpSolver::step_block(Block& k, double target, bool corrector) {
+  const auto Sinv = fixed<N>(k.Sinv);
+  const auto X = fixed<N>(k.X);
+  auto dS = fixed<N>(k.dS);
+  auto U = fixed<N>(k.U);
+  auto T = fixed<N>(k.T);
+  dS = fixed<N>(k.Rd);
+  for (const Term& t : k.terms) {
+    dense_sdp_axpy<N>(t, dy_(t.var), dS);
+  }
+  U.noalias() = X.lazyProduct(dS);
+  T.noalias() = U.lazyProduct(Sinv);
+  T = target * Sinv - T;
+  if (corrector) {
+    T -= fixed<N>(k.G);
+  }
+  fixed<N>(k.dX) = 0.5 * (T + T.transpose()) - X;
+}
+
 /// The search direction (header comment) for the target σμ; the corrector adds G = dXa dSa S⁻¹.
 void DenseSdpSolver::direction(double target, bool corrector) {
   h_ = -b_;
   for (Block& k : blocks_) {
-    k.U.noalias() = k.X.lazyProduct(k.Rd);
-    if (corrector) {
-      k.T.noalias() = k.dXa.lazyProduct(k.dSa);
-      k.G.noalias() = k.T.lazyProduct(k.Sinv);
-    }
-    k.R.noalias() = k.U.lazyProduct(k.Sinv);
-    k.R = target * k.Sinv - k.R;
-    if (corrector) {
-      k.R -= k.G;
-    }
-    for (const Term& t : k.terms) {
-      h_(t.var) += dense_sdp_inner(t, k.R);
-    }
+    with_block_size(k.size,
+                    [&](auto n) { residual_block<decltype(n)::value>(k, target, corrector); });
   }
   dy_ = h_;
   schur_.solveInPlace(dy_);
   for (Block& k : blocks_) {
-    k.dS = k.Rd;
-    for (const Term& t : k.terms) {
-      dense_sdp_axpy(t, dy_(t.var), k.dS);
-    }
-    k.U.noalias() = k.X.lazyProduct(k.dS);
-    k.T.noalias() = k.U.lazyProduct(k.Sinv);
-    k.T = target * k.Sinv - k.T;
-    if (corrector) {
-      k.T -= k.G;
-    }
-    k.dX = 0.5 * (k.T + k.T.transpose());
-    k.dX -= k.X;
+    with_block_size(k.size, [&](auto n) { step_block<decltype(n)::value>(k, target, corrector); });
   }
 }
 
-/// Largest α with V + α D ⪰ 0 (infinity when D ⪰ 0): −1/λ_min(L⁻¹ D L⁻ᵀ), f the Cholesky
-/// factorisation V = L Lᵀ of the iteration.
-double DenseSdpSolver::block_step(Block& k, const Eigen::LLT<Eigen::MatrixXd>& f,
-                                  const Eigen::MatrixXd& D) {
-  k.U = D;
-  f.matrixL().solveInPlace(k.U);
-  k.T = k.U.transpose();
-  f.matrixL().solveInPlace(k.T);
-  double lmin = 0.0;
-  switch (k.size) {
-    case 3: lmin = dense_sdp_min_eigenvalue<3>(k.T); break;
-    case 6: lmin = dense_sdp_min_eigenvalue<6>(k.T); break;
-    case 9: lmin = dense_sdp_min_eigenvalue<9>(k.T); break;
-    default:
-      k.eig.compute(k.T, Eigen::EigenvaluesOnly);
-      lmin = k.eig.eigenvalues()(0);
+/// min(cap, largest α with V + α D ⪰ 0) for block k (V, D = X, dX when primal, else S, dS): when
+/// V + cap D passes a Cholesky test, cap; otherwise −1/λ_min(L⁻¹ D L⁻ᵀ), V = L Lᵀ.
+template <int N>
+double DenseSdpSolver::block_step(Block& k, bool primal, double cap) {
+  const auto V = fixed<N>(primal ? k.X : k.S);
+  const auto D = fixed<N>(primal ? k.dX : k.dS);
+  auto T = fixed<N>(k.T);
+  auto U = fixed<N>(k.U);
+  T = V + cap * D;
+  if (cholesky_lower(T, U)) {
+    return cap;
   }
-  return lmin < 0.0 ? -1.0 / lmin : std::numeric_limits<double>::infinity();
+  const auto Winv = fixed<N>(primal ? k.WX : k.W);  // L⁻¹
+  U.noalias() = Winv.lazyProduct(D);
+  T.noalias() = U.lazyProduct(Winv.transpose());
+  const double lmin = block_min_eigenvalue<N>(k.T, k.eig);
+  return lmin < 0.0 ? std::min(cap, -1.0 / lmin) : cap;
 }
 
 /// min(cap, largest α with X + α dX ⪰ 0) (primal) or the same for S + α dS: a block whose
@@ -326,37 +429,45 @@ double DenseSdpSolver::block_step(Block& k, const Eigen::LLT<Eigen::MatrixXd>& f
 double DenseSdpSolver::max_step(bool primal, double cap) {
   double a = cap;
   for (Block& k : blocks_) {
-    const Eigen::MatrixXd& V = primal ? k.X : k.S;
-    const Eigen::MatrixXd& D = primal ? k.dX : k.dS;
-    k.T = V;
-    k.T += a * D;
-    k.chol.compute(k.T);
-    if (k.chol.info() == Eigen::Success) {
-      continue;
-    }
-    a = std::min(a, block_step(k, primal ? k.lx : k.ls, D));
+    a = with_block_size(k.size,
+                        [&](auto n) { return block_step<decltype(n)::value>(k, primal, a); });
   }
   return a;
+}
+
+template <int N>
+double DenseSdpSolver::affine_block(const Block& k, double ap, double ad) {
+  return (fixed<N>(k.X) + ap * fixed<N>(k.dX)).cwiseProduct(fixed<N>(k.S) + ad * fixed<N>(k.dS))
+      .sum();
 }
 
 /// ⟨X + αp dX, S + αd dS⟩ / n.
 double DenseSdpSolver::affine_mu(double ap, double ad) const {
   double s = 0.0;
   for (const Block& k : blocks_) {
-    s += (k.X + ap * k.dX).cwiseProduct(k.S + ad * k.dS).sum();
+    s += with_block_size(k.size,
+                         [&](auto n) { return affine_block<decltype(n)::value>(k, ap, ad); });
   }
   return s / n_;
+}
+
+template <int N>
+void DenseSdpSolver::update_block(Block& k, double ap, double ad) {
+  auto X = fixed<N>(k.X);
+  auto S = fixed<N>(k.S);
+  auto T = fixed<N>(k.T);
+  X += ap * fixed<N>(k.dX);
+  S += ad * fixed<N>(k.dS);
+  T = 0.5 * (X + X.transpose());
+  X = T;
+  T = 0.5 * (S + S.transpose());
+  S = T;
 }
 
 void DenseSdpSolver::update(double ap, double ad) {
   y_ += ad * dy_;
   for (Block& k : blocks_) {
-    k.X += ap * k.dX;
-    k.S += ad * k.dS;
-    k.T = 0.5 * (k.X + k.X.transpose());
-    k.X = k.T;
-    k.T = 0.5 * (k.S + k.S.transpose());
-    k.S = k.T;
+    with_block_size(k.size, [&](auto n) { update_block<decltype(n)::value>(k, ap, ad); });
   }
 }
 

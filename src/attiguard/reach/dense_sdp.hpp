@@ -80,13 +80,17 @@ class DenseSdpSolver {
     int size{0};
     Eigen::MatrixXd F0;
     std::vector<Term> terms;
-    Eigen::MatrixXd X, S, Sinv, Rd, dX, dS, dXa, dSa, G, R, T, U, I;
+    Eigen::MatrixXd X, S, Sinv, Rd, dX, dS, dXa, dSa, G, R, T, U;
     Eigen::MatrixXd LX;  ///< the Cholesky factor L_X, upper triangle zero
+    Eigen::MatrixXd WX;  ///< L_X⁻¹ (lower triangular)
     Eigen::MatrixXd W;   ///< L_S⁻¹ (S⁻¹ = Wᵀ W)
     Eigen::MatrixXd Gs;  ///< column i: G_i = W F_i L_X, s² × terms
     Eigen::MatrixXd Mb;  ///< Gsᵀ Gs, the block's part of the Schur complement
-    Eigen::LLT<Eigen::MatrixXd> lx, ls, chol;  ///< X, S (once per iteration), step tests
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;  ///< blocks of a size not compiled fixed
+  };
+  /// Block sums of factor_and_residuals: ⟨X,S⟩, ⟨F0,X⟩, ‖Rd‖².
+  struct Sums {
+    double xs{0.0}, f0x{0.0}, rd2{0.0};
   };
 
   bool constraints_independent();
@@ -94,14 +98,27 @@ class DenseSdpSolver {
   bool factor_and_residuals();
   [[nodiscard]] bool converged(double tol) const noexcept;
   bool form_schur();
-  void schur_block(Block& k);
   void direction(double target, bool corrector);
   double max_step(bool primal, double cap);
-  static double block_step(Block& k, const Eigen::LLT<Eigen::MatrixXd>& f,
-                           const Eigen::MatrixXd& D);
   double affine_mu(double ap, double ad) const;
   void update(double ap, double ad);
   SdpResult finish(bool ok, double recheck_tol) const;
+
+  // Kernels on one block, templated on its size (3, 6, 9 fixed; Eigen::Dynamic otherwise).
+  template <int N>
+  bool factor_block(Block& k, Sums& sums);
+  template <int N>
+  void schur_block(Block& k);
+  template <int N>
+  void residual_block(Block& k, double target, bool corrector);
+  template <int N>
+  void step_block(Block& k, double target, bool corrector);
+  template <int N>
+  static double block_step(Block& k, bool primal, double cap);
+  template <int N>
+  static double affine_block(const Block& k, double ap, double ad);
+  template <int N>
+  static void update_block(Block& k, double ap, double ad);
 
   const LmiProblem* problem_;
   DenseSdpSettings settings_;

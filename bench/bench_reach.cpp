@@ -110,6 +110,36 @@ static void BM_CsdpSolveOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_CsdpSolveOnly)->Unit(benchmark::kMicrosecond);
 
+// Issue 48's SDP figure: the paper example end to end (its 120 SDPs, run_conreach) with the dense
+// solver and its warm start (/1) or CSDP alone (/0); counters: the mean thread CPU time of one
+// SDP solve inside solve_sdp and the dense iterations per solve (dense_sdp_counts(); docs/reach.md,
+// "Dense SDP solver").
+static void BM_PaperSdpPerSolve(benchmark::State& state) {
+  const bool dense = state.range(0) != 0;
+  const bool was = ar::dense_sdp_enabled();
+  ar::set_dense_sdp_enabled(dense);
+  const ar::DenseSdpCounts before = ar::dense_sdp_counts();
+  for (auto _ : state) {
+    const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});
+    benchmark::DoNotOptimize(res.steps.back().r);
+  }
+  const ar::DenseSdpCounts after = ar::dense_sdp_counts();
+  ar::set_dense_sdp_enabled(was);
+  const double solves =
+      static_cast<double>(after.dense + after.csdp - before.dense - before.csdp);
+  const double seconds = after.dense_seconds + after.csdp_seconds - before.dense_seconds -
+                         before.csdp_seconds;
+  state.SetLabel(dense ? "dense, warm start" : "CSDP");
+  state.counters["us_per_sdp"] = solves > 0 ? 1e6 * seconds / solves : 0.0;
+  state.counters["fallbacks"] = static_cast<double>(after.fallback - before.fallback);
+  const double dense_solves = static_cast<double>(after.dense - before.dense);
+  state.counters["iterations"] =
+      dense_solves > 0
+          ? static_cast<double>(after.dense_iterations - before.dense_iterations) / dense_solves
+          : 0.0;
+}
+BENCHMARK(BM_PaperSdpPerSolve)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
 static void BM_SoundnessPaper10k(benchmark::State& state) {
   const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});
   ar::SoundnessSettings s;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/reach/dense_sdp.hpp"
 #include "attiguard/reach/metrics.hpp"
 #include "attiguard/reach/proved_radii.hpp"
 #include "attiguard/reach/scalar_interval.hpp"
@@ -202,6 +203,9 @@ struct RunFrame {
   double b;      ///< omega_radius of the initial set
   bool coupled;  ///< MetricKind::coupled
   bool att_dep;  ///< the loop's LMI depends on R
+  /// The dense SDP solver's warm start, carried from solve to solve of this run (issue 48,
+  /// docs/reach.md "Dense SDP solver"); owned by run_conreach.
+  DenseSdpPoint* warm;
 };
 
 /// One step's time grid: t_i, its sub-step boundaries and t_{i+1}; `dt` the length the ball's
@@ -291,6 +295,7 @@ StepChoice choose_step_metric(const RunFrame& f, const ReachStep& st, const Step
   MetricSdpSettings sdp = s.sdp;
   sdp.coupled = f.coupled;
   sdp.rigorous = s.rigour == Rigour::rigorous;
+  sdp.sdp.warm_start = f.warm;
   double q_floor = (f.att_dep && !f.coupled) ? s.attitude_floor_ratio * lambda_min(M.Q) : s.sdp.q_floor;
   StepChoice out;
   for (int pass = 0; pass < 2; ++pass) {
@@ -591,8 +596,9 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   res.r0 = proved_cover_radius({Mat3::Identity(), Mat3::Zero(), initial.P0}, initial.attitude_radius,
                                initial.omega_radius);
   res.nominal.push_back({0.0, initial.R0, initial.omega0});
+  DenseSdpPoint warm;
   const RunFrame frame{loop, s, initial.attitude_radius, initial.omega_radius,
-                       s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude()};
+                       s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude(), &warm};
   Carry cs{res, StateMetric{Mat3::Identity(), Mat3::Zero(), initial.P0}, res.r0,
            Deviation::of_balls(initial.attitude_radius, initial.omega_radius)};
   if (s.adaptive) {

@@ -24,6 +24,7 @@
 #include <limits>
 #include <type_traits>
 #include <sstream>
+#include <time.h>
 
 namespace attiguard::reach {
 
@@ -35,9 +36,10 @@ namespace {
 std::atomic<bool> g_dense_sdp_enabled{false};
 std::atomic<long> g_dense_sdp_accepted{0};
 std::atomic<long> g_dense_sdp_fallback{0};
-
-/// A term with at most this many non-zero entries (both triangles) is used entry by entry.
-constexpr int kDenseSdpSparseEntries = 4;
+std::atomic<long> g_csdp_solves{0};
+std::atomic<long> g_dense_sdp_iterations{0};
+std::atomic<long long> g_dense_sdp_nanoseconds{0};
+std::atomic<long long> g_csdp_nanoseconds{0};
 
 template <int N>
 using BlockMat = Eigen::Matrix<double, N, N>;
@@ -177,7 +179,9 @@ DenseSdpSolver::DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings
           }
         }
       }
-      t.sparse = static_cast<int>(t.values.size()) <= kDenseSdpSparseEntries;
+      const auto nnz = static_cast<int>(t.values.size());
+      t.sparse = 2 * nnz <= s * s;
+      t.outer = nnz < 2 * s;
       k.terms.push_back(std::move(t));
     }
     for (Eigen::MatrixXd* W : {&k.X, &k.S, &k.Sinv, &k.Rd, &k.dX, &k.dS, &k.dXa, &k.dSa, &k.G,
@@ -186,7 +190,6 @@ DenseSdpSolver::DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings
     }
     const auto nt = static_cast<Eigen::Index>(k.terms.size());
     k.Gs.setZero(static_cast<Eigen::Index>(s) * s, nt);
-    k.Mb.setZero(nt, nt);
     k.eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s);
     blocks_.push_back(std::move(k));
   }
@@ -288,44 +291,37 @@ bool DenseSdpSolver::converged(double tol) const noexcept {
          info_.dual_infeasibility <= tol;
 }
 
-/// Adds block k's part of M_ij = ⟨F_i, X F_j S⁻¹⟩ = ⟨G_i, G_j⟩, G_i = W F_i L_X (header
-/// comment), to the lower triangle of M.
+/// Adds block k's part of M_ij = ⟨F_i, X F_j S⁻¹⟩ (header comment) to the lower triangle of M:
+/// P_j = X F_j S⁻¹ for every term (by outer products X e_r · e_cᵀ S⁻¹ of its entries when they
+/// are few, else by two products), then ⟨F_i, P_j⟩ for i ≥ j (entry by entry when F_i is sparse).
 template <int N>
 void DenseSdpSolver::schur_block(Block& k) {
-  constexpr int NN = N == Eigen::Dynamic ? Eigen::Dynamic : N * N;
   const int s = k.size;
   const int nt = static_cast<int>(k.terms.size());
-  const auto W = fixed<N>(k.W);
-  const auto LX = fixed<N>(k.LX);
-  for (int i = 0; i < nt; ++i) {
-    const Term& t = k.terms[static_cast<std::size_t>(i)];
-    BlockMap<N> G(k.Gs.col(i).data(), s, s);
-    if (t.sparse) {  // W F L_X = Σ f (W e_r)(e_cᵀ L_X), W and L_X lower triangular
-      G.setZero();
+  const auto X = fixed<N>(k.X);
+  const auto Sinv = fixed<N>(k.Sinv);
+  for (int j = 0; j < nt; ++j) {
+    const Term& t = k.terms[static_cast<std::size_t>(j)];
+    BlockMap<N> P(k.Gs.col(j).data(), s, s);
+    if (t.outer) {
+      P.setZero();
       for (std::size_t e = 0; e < t.values.size(); ++e) {
-        const int r = t.rows[e];
-        const int c = t.cols[e];
-        for (int q = 0; q <= c; ++q) {
-          const double f = t.values[e] * LX(c, q);
-          for (int p = r; p < s; ++p) {
-            G(p, q) += f * W(p, r);
-          }
-        }
+        P.noalias() += (t.values[e] * X.col(t.rows[e])) * Sinv.row(t.cols[e]);
       }
     } else {
       auto U = fixed<N>(k.U);
-      U.noalias() = fixed<N>(t.F).lazyProduct(LX);
-      G.noalias() = W.lazyProduct(U);
+      U.noalias() = fixed<N>(t.F).lazyProduct(Sinv);
+      P.noalias() = X.lazyProduct(U);
     }
   }
   for (int j = 0; j < nt; ++j) {
-    const Eigen::Map<const Eigen::Matrix<double, NN, 1>> gj(k.Gs.col(j).data(), k.Gs.rows());
+    const ConstBlockMap<N> P(k.Gs.col(j).data(), s, s);
     const int vj = k.terms[static_cast<std::size_t>(j)].var;
     for (int i = j; i < nt; ++i) {
-      const Eigen::Map<const Eigen::Matrix<double, NN, 1>> gi(k.Gs.col(i).data(), k.Gs.rows());
-      const int vi = k.terms[static_cast<std::size_t>(i)].var;
+      const Term& ti = k.terms[static_cast<std::size_t>(i)];
       // the lower triangle of M; the upper one is its mirror
-      M_(std::max(vi, vj), std::min(vi, vj)) += gi.dot(gj) * (vi == vj && i != j ? 2.0 : 1.0);
+      M_(std::max(ti.var, vj), std::min(ti.var, vj)) +=
+          dense_sdp_inner<N>(ti, P) * (ti.var == vj && i != j ? 2.0 : 1.0);
     }
   }
 }
@@ -473,6 +469,45 @@ void DenseSdpSolver::update(double ap, double ad) {
 
 SdpResult DenseSdpSolver::solve(double recheck_tol) {
   initial_point();
+  return iterate(recheck_tol);
+}
+
+void DenseSdpSolver::export_point(DenseSdpPoint& point) const {
+  point.X.resize(blocks_.size());
+  point.S.resize(blocks_.size());
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    point.X[i] = blocks_[i].X;
+    point.S[i] = blocks_[i].S;
+  }
+  point.y = y_;
+}
+
+bool DenseSdpSolver::accepts(const DenseSdpPoint& start) const noexcept {
+  bool fits = start.X.size() == blocks_.size() && start.S.size() == blocks_.size() &&
+              start.y.size() == y_.size();
+  for (std::size_t i = 0; fits && i < blocks_.size(); ++i) {
+    fits = start.X[i].rows() == blocks_[i].size && start.X[i].cols() == blocks_[i].size &&
+           start.S[i].rows() == blocks_[i].size && start.S[i].cols() == blocks_[i].size;
+  }
+  return fits;
+}
+
+SdpResult DenseSdpSolver::solve_from(const DenseSdpPoint& start, double shift, double recheck_tol) {
+  initial_point();
+  if (accepts(start)) {
+    y_ = start.y;
+    for (std::size_t i = 0; i < blocks_.size(); ++i) {
+      Block& k = blocks_[i];
+      const double tx = shift * std::max(1.0, start.X[i].trace() / k.size);
+      const double ts = shift * std::max(1.0, start.S[i].trace() / k.size);
+      k.X = start.X[i] + tx * Eigen::MatrixXd::Identity(k.size, k.size);
+      k.S = start.S[i] + ts * Eigen::MatrixXd::Identity(k.size, k.size);
+    }
+  }
+  return iterate(recheck_tol);
+}
+
+SdpResult DenseSdpSolver::iterate(double recheck_tol) {
   info_ = DenseSdpInfo{};
   if (!independent_) {
     SdpResult result;
@@ -558,15 +593,52 @@ void set_dense_sdp_enabled(bool enabled) noexcept { g_dense_sdp_enabled.store(en
 bool dense_sdp_enabled() noexcept { return g_dense_sdp_enabled.load(); }
 
 DenseSdpCounts dense_sdp_counts() noexcept {
-  return DenseSdpCounts{g_dense_sdp_accepted.load(), g_dense_sdp_fallback.load()};
+  DenseSdpCounts c;
+  c.dense = g_dense_sdp_accepted.load();
+  c.fallback = g_dense_sdp_fallback.load();
+  c.csdp = g_csdp_solves.load();
+  c.dense_iterations = g_dense_sdp_iterations.load();
+  c.dense_seconds = static_cast<double>(g_dense_sdp_nanoseconds.load()) * 1e-9;
+  c.csdp_seconds = static_cast<double>(g_csdp_nanoseconds.load()) * 1e-9;
+  return c;
 }
 
-void record_dense_sdp_outcome(bool accepted) noexcept {
+long long thread_cpu_nanoseconds() noexcept {
+  timespec ts{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return 0;
+  return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+
+void record_dense_sdp_outcome(bool accepted, int iterations, long long nanoseconds) noexcept {
   if (accepted) {
     ++g_dense_sdp_accepted;
+    g_dense_sdp_iterations += iterations;
   } else {
     ++g_dense_sdp_fallback;
   }
+  g_dense_sdp_nanoseconds += nanoseconds;
+}
+
+void record_csdp_time(long long nanoseconds) noexcept {
+  ++g_csdp_solves;
+  g_csdp_nanoseconds += nanoseconds;
+}
+
+SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpPoint* warm,
+                               double recheck_tol, int* iterations) {
+  DenseSdpSolver solver(problem);
+  SdpResult result;
+  if (warm != nullptr && solver.accepts(*warm)) {
+    result = solver.solve_from(*warm, kDenseSdpWarmShift, recheck_tol);
+  }
+  if (result.status != SdpStatus::solved) {
+    result = solver.solve(recheck_tol);
+  }
+  if (warm != nullptr && result.status == SdpStatus::solved) {
+    solver.export_point(*warm);
+  }
+  if (iterations != nullptr) *iterations = solver.info().iterations;
+  return result;
 }
 
 }  // namespace attiguard::reach

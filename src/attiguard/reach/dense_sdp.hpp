@@ -50,6 +50,12 @@ struct DenseSdpInfo {
   double primal_trace{0.0};
 };
 
+/// An iterate of the dense solver (X and S per block, y), kept for a warm start.
+struct DenseSdpPoint {
+  std::vector<Eigen::MatrixXd> X, S;
+  Eigen::VectorXd y;
+};
+
 /// The HKM / Mehrotra solver of dense_sdp.hpp for one LmiProblem; reusable (solve() restarts from
 /// the default infeasible start every time). The problem must outlive the solver and pass
 /// solve_sdp's validation (finite, symmetric, every variable used). Linearly dependent F_i are
@@ -65,6 +71,15 @@ class DenseSdpSolver {
   /// Never reports infeasible: a problem it cannot solve is `failed` (CSDP decides).
   [[nodiscard]] SdpResult solve(double recheck_tol = 1e-9);
 
+  /// The final iterate of the last solve (X, S per block and y), for a warm start.
+  void export_point(DenseSdpPoint& point) const;
+  /// Whether `start` has this problem's shapes (blocks, their sizes, the number of variables).
+  [[nodiscard]] bool accepts(const DenseSdpPoint& start) const noexcept;
+  /// solve() from a previous solver's final iterate shifted by `shift` times its mean eigenvalue
+  /// (at least `shift`) per block; the default start when the shapes differ.
+  [[nodiscard]] SdpResult solve_from(const DenseSdpPoint& start, double shift,
+                                     double recheck_tol = 1e-9);
+
   /// Iterations and final residuals of the last solve() (docs/reach.md, "Dense SDP solver").
   [[nodiscard]] const DenseSdpInfo& info() const noexcept { return info_; }
 
@@ -72,9 +87,10 @@ class DenseSdpSolver {
   struct Term {
     int var{0};
     Eigen::MatrixXd F;                 ///< symmetrised F_i of the block
-    std::vector<int> rows, cols;       ///< non-zero entries (both triangles) when sparse
+    std::vector<int> rows, cols;       ///< the non-zero entries (both triangles)
     std::vector<double> values;
-    bool sparse{false};
+    bool sparse{false};  ///< at most half the entries non-zero: inner products entry by entry
+    bool outer{false};   ///< fewer than 2s entries: X F S⁻¹ by outer products (schur_block)
   };
   struct Block {
     int size{0};
@@ -84,8 +100,7 @@ class DenseSdpSolver {
     Eigen::MatrixXd LX;  ///< the Cholesky factor L_X, upper triangle zero
     Eigen::MatrixXd WX;  ///< L_X⁻¹ (lower triangular)
     Eigen::MatrixXd W;   ///< L_S⁻¹ (S⁻¹ = Wᵀ W)
-    Eigen::MatrixXd Gs;  ///< column i: G_i = W F_i L_X, s² × terms
-    Eigen::MatrixXd Mb;  ///< Gsᵀ Gs, the block's part of the Schur complement
+    Eigen::MatrixXd Gs;  ///< column j: P_j = X F_j S⁻¹, s² × terms
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;  ///< blocks of a size not compiled fixed
   };
   /// Block sums of factor_and_residuals: ⟨X,S⟩, ⟨F0,X⟩, ‖Rd‖².
@@ -93,6 +108,7 @@ class DenseSdpSolver {
     double xs{0.0}, f0x{0.0}, rd2{0.0};
   };
 
+  SdpResult iterate(double recheck_tol);
   bool constraints_independent();
   void initial_point();
   bool factor_and_residuals();
@@ -145,14 +161,40 @@ void set_dense_sdp_enabled(bool enabled) noexcept;
 [[nodiscard]] bool dense_sdp_enabled() noexcept;
 
 /// solve_sdp's outcomes since the start of the process (issue 48, docs/reach.md): solves
-/// accepted from the dense solver, and solves that fell back to CSDP.
+/// accepted from the dense solver, solves that fell back to CSDP, and the CPU time of the calling
+/// thread spent in each solver (the dense time includes the attempts that fell back).
 struct DenseSdpCounts {
   long dense{0};
   long fallback{0};
+  long csdp{0};                ///< CSDP solves (fallbacks and solves with the dense path off)
+  long dense_iterations{0};    ///< iterations of the accepted dense solves
+  double dense_seconds{0.0};
+  double csdp_seconds{0.0};
 };
+
+/// CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID), in nanoseconds: what the counters
+/// of dense_sdp_counts() add up (issue 48, docs/reach.md "Dense SDP solver").
+[[nodiscard]] long long thread_cpu_nanoseconds() noexcept;
 /// The counts of solve_sdp's dense and CSDP solves (issue 48, docs/reach.md "Dense SDP solver").
 [[nodiscard]] DenseSdpCounts dense_sdp_counts() noexcept;
 /// Called by solve_sdp once per solve with the dense path enabled (issue 48, docs/reach.md).
-void record_dense_sdp_outcome(bool accepted) noexcept;
+/// `nanoseconds` of thread CPU time, `iterations` of the solver.
+void record_dense_sdp_outcome(bool accepted, int iterations, long long nanoseconds) noexcept;
+/// Called by solve_sdp once per CSDP solve (issue 48, docs/reach.md "Dense SDP solver").
+void record_csdp_time(long long nanoseconds) noexcept;
+
+/// Relative shift of a warm start (DenseSdpSolver::solve_from): X and S of the previous solve
+/// plus 0.1 times their mean eigenvalue (at least 0.1). Measured on the paper's step-0 SDP
+/// against the same SDP at other rates and enclosures: 7–10 iterations instead of 10–17; smaller
+/// shifts start too close to the boundary (docs/reach.md, "Dense SDP solver").
+inline constexpr double kDenseSdpWarmShift = 0.1;
+
+/// One dense solve from `warm` when it holds an iterate of the same shapes (kDenseSdpWarmShift),
+/// else cold; when the warm start does not solve, a cold start. A returned solution's final
+/// iterate is stored into `warm` (nullptr: cold, nothing stored). Issue 48, docs/reach.md
+/// "Dense SDP solver".
+/// `iterations` (if not null) receives the iterations of the returned solve.
+[[nodiscard]] SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpPoint* warm,
+                                             double recheck_tol, int* iterations = nullptr);
 
 }  // namespace attiguard::reach

@@ -412,6 +412,19 @@ void read_solution(const LmiProblem& problem, const CsdpData& data, int code, do
   result.message = os.str();
 }
 
+/// Adds the thread CPU time since its construction to the CSDP time of dense_sdp_counts() when it
+/// goes out of scope.
+class ScopedCsdpTimer {
+ public:
+  ScopedCsdpTimer() : start_(thread_cpu_nanoseconds()) {}
+  ~ScopedCsdpTimer() { record_csdp_time(thread_cpu_nanoseconds() - start_); }
+  ScopedCsdpTimer(const ScopedCsdpTimer&) = delete;
+  ScopedCsdpTimer& operator=(const ScopedCsdpTimer&) = delete;
+
+ private:
+  long long start_;
+};
+
 }  // namespace
 
 SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, double recheck_tol) {
@@ -420,13 +433,16 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
   // Issue 48 (docs/reach.md, "Dense SDP solver"): the dense HKM solver of dense_sdp.hpp first,
   // outside CSDP's lock; CSDP, the reference, when it does not solve and re-check.
   if (dense_sdp_enabled()) {
-    SdpResult dense = solve_sdp_dense(problem, {}, recheck_tol);
+    const long long t0 = thread_cpu_nanoseconds();
+    int iterations = 0;
+    SdpResult dense = solve_sdp_dense_warm(problem, settings.warm_start, recheck_tol, &iterations);
     const bool accepted = dense.status == SdpStatus::solved;
-    record_dense_sdp_outcome(accepted);
+    record_dense_sdp_outcome(accepted, iterations, thread_cpu_nanoseconds() - t0);
     if (accepted) {
       return dense;
     }
   }
+  const ScopedCsdpTimer csdp_timer;
   SdpResult result;
   CsdpData data;
   const int n = fill_constant_blocks(problem, data);

@@ -35,16 +35,10 @@ Eigen::MatrixXd expm(const Eigen::MatrixXd& M) {
 
 namespace tube_rounding {
 
-/// nextafter(x, +∞) (Interval::up) without the libm call: the tube's exp bound rounds ~10⁴
-/// operations per sub-step. Finite nonzero x: the neighbouring bit pattern; ±0: the smallest
-/// subnormal; NaN and +∞ unchanged; −∞ → −DBL_MAX.
-inline double up(double x) {
-  if (x == 0.0) return std::numeric_limits<double>::denorm_min();
-  if (!(x < HUGE_VAL)) return x;  // NaN, +∞
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
-}
-inline double down(double x) { return -up(-x); }
+/// nextafter(x, ±∞) without the libm call (scalar_interval.hpp): the tube's exp bound rounds ~10⁴
+/// operations per sub-step.
+inline double up(double x) { return next_up(x); }
+inline double down(double x) { return next_down(x); }
 double add_up(double a, double b) { return up(a + b); }
 double mul_up(double a, double b) { return up(a * b); }
 

@@ -289,29 +289,27 @@ TEST(DenseSdp, PaperExampleSolvesItsSdpsDense) {
 
 TEST(DenseSdp, WarmStartFromANeighbouringSdpReachesTheColdOptimumInFewerIterations) {
   // The paper's step-0 SDP, then the same SDP at other rates and over a smaller enclosure (the
-  // line search's and the next step's problems): from the first one's final iterate the dense
-  // solver reaches the cold start's optimum in fewer iterations (docs/reach.md, "Dense SDP solver").
+  // line search's and the next step's problems): reloaded into the solver of the first one and
+  // started from its solution, the dense solver reaches the cold start's optimum in fewer
+  // iterations (docs/reach.md, "Dense SDP solver").
   const ar::LinearOmegaLoop loop(ar::Vec3(-2, -1, -3).asDiagonal());
   const ar::Box3 U0{ar::Vec3(0.442, 0.398, 0.361), ar::Vec3(0.750, 0.640, 0.710)};
   const ar::Box3 U1{ar::Vec3(0.40, 0.36, 0.33), ar::Vec3(0.70, 0.60, 0.66)};
   const ar::StateMetric prev{ar::Mat3::Identity(), ar::Mat3::Zero(), ar::Mat3::Identity()};
   const ar::LmiProblem first = ar::metric_problem(loop.lmi_enclosure({}, U0), prev, 0.1871,
                                                   ar::MetricObjective::max_trace_q, {});
-  ar::DenseSdpSolver s0(first);
-  ASSERT_EQ(s0.solve().status, ar::SdpStatus::solved);
-  ar::DenseSdpPoint point;
-  s0.export_point(point);
   int cold_total = 0;
   int warm_total = 0;
   for (const ar::Box3& U : {U0, U1}) {
     for (double c : {0.1871, 0.19, 0.21}) {
       const ar::LmiProblem p =
           ar::metric_problem(loop.lmi_enclosure({}, U), prev, c, ar::MetricObjective::max_trace_q, {});
+      ar::DenseSdpSolver warm(first);
+      ASSERT_EQ(warm.solve().status, ar::SdpStatus::solved);
+      ASSERT_TRUE(warm.reload(p));
       ar::DenseSdpSolver cold(p);
-      ar::DenseSdpSolver warm(p);
-      ASSERT_TRUE(warm.accepts(point));
       const ar::SdpResult rc = cold.solve();
-      const ar::SdpResult rw = warm.solve_from(point, ar::kDenseSdpWarmShift);
+      const ar::SdpResult rw = warm.solve_warm(ar::kDenseSdpWarmShift);
       ASSERT_EQ(rc.status, ar::SdpStatus::solved) << rc.message;
       ASSERT_EQ(rw.status, ar::SdpStatus::solved) << rw.message;
       EXPECT_NEAR(rw.objective, rc.objective, 1e-8 * (1.0 + std::abs(rc.objective))) << c;
@@ -324,30 +322,33 @@ TEST(DenseSdp, WarmStartFromANeighbouringSdpReachesTheColdOptimumInFewerIteratio
   EXPECT_LT(warm_total, cold_total);
 }
 
-TEST(DenseSdp, WarmStartOfAnotherShapeIsIgnoredAndSolveSdpStoresItsIterate) {
+TEST(DenseSdp, AWorkspaceKeepsOneSolverPerShapeAndReloadRefusesAnotherShape) {
   std::mt19937_64 rng(7);
-  ar::LmiProblem p(1);  // min t s.t. t I − A ⪰ 0
-  const int blk = p.add_block(4);
-  p.add_constant(blk, -dense_sdp_test::random_symmetric(rng, 4));
-  p.add_term(blk, 0, Eigen::MatrixXd::Identity(4, 4));
-  p.set_objective(0, 1.0);
-  ar::DenseSdpPoint other;  // the shape of a 3×3 problem
-  other.X = {Eigen::MatrixXd::Identity(3, 3)};
-  other.S = {Eigen::MatrixXd::Identity(3, 3)};
-  other.y = Eigen::VectorXd::Zero(1);
-  ar::DenseSdpSolver solver(p);
-  EXPECT_FALSE(solver.accepts(other));
-  const ar::SdpResult cold = ar::solve_sdp_dense(p);
-  const ar::SdpResult from_other = solver.solve_from(other, ar::kDenseSdpWarmShift);
-  ASSERT_EQ(from_other.status, ar::SdpStatus::solved);
-  EXPECT_EQ(from_other.objective, cold.objective);  // the same cold iteration, bit for bit
+  auto max_eigenvalue_problem = [&](int s) {  // min t s.t. t I − A ⪰ 0
+    ar::LmiProblem p(1);
+    const int blk = p.add_block(s);
+    p.add_constant(blk, -dense_sdp_test::random_symmetric(rng, s));
+    p.add_term(blk, 0, Eigen::MatrixXd::Identity(s, s));
+    p.set_objective(0, 1.0);
+    return p;
+  };
+  const ar::LmiProblem p4 = max_eigenvalue_problem(4);
+  const ar::LmiProblem p4b = max_eigenvalue_problem(4);
+  const ar::LmiProblem p3 = max_eigenvalue_problem(3);
+  ar::DenseSdpSolver solver(p4);
+  EXPECT_FALSE(solver.reload(p3));
+  EXPECT_EQ(solver.solve_warm(ar::kDenseSdpWarmShift).objective,
+            ar::solve_sdp_dense(p4).objective);  // no solution yet: the same cold solve, same bits
 
   const dense_sdp_test::DenseFirst dense_first;
+  ar::DenseSdpWorkspace ws;
   ar::SdpSettings settings;
-  settings.warm_start = &other;
-  const ar::SdpResult via = ar::solve_sdp(p, settings);
-  ASSERT_EQ(via.status, ar::SdpStatus::solved);
-  ASSERT_EQ(other.X.size(), 1u);
-  EXPECT_EQ(other.X[0].rows(), 4);  // the solve's own iterate replaced the other shape's
-  EXPECT_NEAR(via.objective, cold.objective, 1e-8 * (1.0 + std::abs(cold.objective)));
+  settings.warm_start = &ws;
+  for (const ar::LmiProblem* p : {&p4, &p4b, &p3}) {
+    const ar::SdpResult via = ar::solve_sdp(*p, settings);
+    ASSERT_EQ(via.status, ar::SdpStatus::solved) << via.message;
+    EXPECT_NEAR(via.objective, ar::solve_sdp_dense(*p).objective, 1e-8 * (1.0 + std::abs(via.objective)));
+    ASSERT_TRUE(ws.solver.has_value());
+    EXPECT_TRUE(ws.solver->reload(*p));  // the workspace now holds a solver of p's shape
+  }
 }

@@ -205,7 +205,7 @@ struct RunFrame {
   bool att_dep;  ///< the loop's LMI depends on R
   /// The dense SDP solver's warm start, carried from solve to solve of this run (issue 48,
   /// docs/reach.md "Dense SDP solver"); owned by run_conreach.
-  DenseSdpPoint* warm;
+  DenseSdpWorkspace* warm;
 };
 
 /// One step's time grid: t_i, its sub-step boundaries and t_{i+1}; `dt` the length the ball's
@@ -596,7 +596,7 @@ ReachResult run_conreach(const ClosedLoop& loop, const InitialSet& initial,
   res.r0 = proved_cover_radius({Mat3::Identity(), Mat3::Zero(), initial.P0}, initial.attitude_radius,
                                initial.omega_radius);
   res.nominal.push_back({0.0, initial.R0, initial.omega0});
-  DenseSdpPoint warm;
+  DenseSdpWorkspace warm;
   const RunFrame frame{loop, s, initial.attitude_radius, initial.omega_radius,
                        s.metric == MetricKind::coupled, loop.lmi_depends_on_attitude(), &warm};
   Carry cs{res, StateMetric{Mat3::Identity(), Mat3::Zero(), initial.P0}, res.r0,

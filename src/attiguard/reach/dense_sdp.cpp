@@ -22,6 +22,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <sstream>
 #include <time.h>
@@ -146,52 +147,99 @@ double block_min_eigenvalue(const Eigen::MatrixXd& T,
   }
 }
 
+/// Symmetrised F of a term and its non-zero entries (both triangles); storage reused.
+template <class TermT>
+void load_term(TermT& t, const Eigen::MatrixXd& F, int s) {
+  t.F = 0.5 * (F + F.transpose());
+  t.rows.clear();
+  t.cols.clear();
+  t.values.clear();
+  for (int c = 0; c < s; ++c) {
+    for (int r = 0; r < s; ++r) {
+      if (t.F(r, c) != 0.0) {
+        t.rows.push_back(r);
+        t.cols.push_back(c);
+        t.values.push_back(t.F(r, c));
+      }
+    }
+  }
+  const auto nnz = static_cast<int>(t.values.size());
+  t.sparse = 2 * nnz <= s * s;
+  t.outer = nnz < 2 * s;
+}
+
 }  // namespace
 
 DenseSdpSolver::DenseSdpSolver(const LmiProblem& problem, const DenseSdpSettings& settings)
     : problem_(&problem), settings_(settings) {
   const int m = problem.num_variables();
-  b_ = problem.objective();
   y_.setZero(m);
   dy_.setZero(m);
   h_.setZero(m);
   rp_.setZero(m);
   M_.setZero(m, m);
   schur_ = Eigen::LLT<Eigen::MatrixXd>(m);
-  double f0sq = 0.0;
+  gram_eig_ = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(m);
   for (const LmiBlock& lb : problem.blocks()) {
     Block k;
     const int s = lb.size;
     k.size = s;
     n_ += s;
-    k.F0 = 0.5 * (lb.F0 + lb.F0.transpose());
-    f0sq += k.F0.squaredNorm();
-    for (const auto& [v, F] : lb.terms) {
+    for (const auto& term : lb.terms) {
       Term t;
-      t.var = v;
-      t.F = 0.5 * (F + F.transpose());
-      for (int c = 0; c < s; ++c) {
-        for (int r = 0; r < s; ++r) {
-          if (t.F(r, c) != 0.0) {
-            t.rows.push_back(r);
-            t.cols.push_back(c);
-            t.values.push_back(t.F(r, c));
-          }
-        }
-      }
-      const auto nnz = static_cast<int>(t.values.size());
-      t.sparse = 2 * nnz <= s * s;
-      t.outer = nnz < 2 * s;
+      t.var = term.first;
+      t.rows.reserve(static_cast<std::size_t>(s) * s);
+      t.cols.reserve(static_cast<std::size_t>(s) * s);
+      t.values.reserve(static_cast<std::size_t>(s) * s);
       k.terms.push_back(std::move(t));
     }
-    for (Eigen::MatrixXd* W : {&k.X, &k.S, &k.Sinv, &k.Rd, &k.dX, &k.dS, &k.dXa, &k.dSa, &k.G,
-                               &k.R, &k.T, &k.U, &k.LX, &k.WX, &k.W}) {
+    for (Eigen::MatrixXd* W : {&k.F0, &k.X, &k.S, &k.Sinv, &k.Rd, &k.dX, &k.dS, &k.dXa, &k.dSa,
+                               &k.G, &k.R, &k.T, &k.U, &k.LX, &k.WX, &k.W}) {
       W->setZero(s, s);
     }
     const auto nt = static_cast<Eigen::Index>(k.terms.size());
     k.Gs.setZero(static_cast<Eigen::Index>(s) * s, nt);
     k.eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s);
     blocks_.push_back(std::move(k));
+  }
+  load(problem);
+}
+
+bool DenseSdpSolver::same_shape(const LmiProblem& problem) const noexcept {
+  if (problem.num_variables() != y_.size() || problem.blocks().size() != blocks_.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    const LmiBlock& lb = problem.blocks()[i];
+    const Block& k = blocks_[i];
+    if (lb.size != k.size || lb.terms.size() != k.terms.size()) return false;
+    for (std::size_t j = 0; j < k.terms.size(); ++j) {
+      if (lb.terms[j].first != k.terms[j].var) return false;
+    }
+  }
+  return true;
+}
+
+bool DenseSdpSolver::reload(const LmiProblem& problem) {
+  if (!same_shape(problem)) return false;
+  problem_ = &problem;
+  load(problem);
+  return true;
+}
+
+/// Copies the problem's data into the solver's storage (same shape) and redoes the measures and
+/// the independence test.
+void DenseSdpSolver::load(const LmiProblem& problem) {
+  b_ = problem.objective();
+  double f0sq = 0.0;
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    const LmiBlock& lb = problem.blocks()[i];
+    Block& k = blocks_[i];
+    k.F0 = 0.5 * (lb.F0 + lb.F0.transpose());
+    f0sq += k.F0.squaredNorm();
+    for (std::size_t j = 0; j < k.terms.size(); ++j) {
+      load_term(k.terms[j], lb.terms[j].second, k.size);
+    }
   }
   norm_b_ = b_.norm();
   norm_f0_ = std::sqrt(f0sq);
@@ -206,12 +254,16 @@ bool DenseSdpSolver::constraints_independent() {
   for (const Block& k : blocks_) {
     for (const Term& ti : k.terms) {
       for (const Term& tj : k.terms) {
-        M_(ti.var, tj.var) += ti.F.cwiseProduct(tj.F).sum();
+        double g = 0.0;
+        for (std::size_t e = 0; e < ti.values.size(); ++e) {
+          g += ti.values[e] * tj.F(ti.rows[e], ti.cols[e]);
+        }
+        M_(ti.var, tj.var) += g;
       }
     }
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M_, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& ev = es.eigenvalues();
+  gram_eig_.compute(M_, Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd& ev = gram_eig_.eigenvalues();
   return ev(0) > 1e-12 * ev(ev.size() - 1);
 }
 
@@ -472,37 +524,15 @@ SdpResult DenseSdpSolver::solve(double recheck_tol) {
   return iterate(recheck_tol);
 }
 
-void DenseSdpSolver::export_point(DenseSdpPoint& point) const {
-  point.X.resize(blocks_.size());
-  point.S.resize(blocks_.size());
-  for (std::size_t i = 0; i < blocks_.size(); ++i) {
-    point.X[i] = blocks_[i].X;
-    point.S[i] = blocks_[i].S;
+SdpResult DenseSdpSolver::solve_warm(double shift, double recheck_tol) {
+  if (!has_solution_) {
+    return solve(recheck_tol);
   }
-  point.y = y_;
-}
-
-bool DenseSdpSolver::accepts(const DenseSdpPoint& start) const noexcept {
-  bool fits = start.X.size() == blocks_.size() && start.S.size() == blocks_.size() &&
-              start.y.size() == y_.size();
-  for (std::size_t i = 0; fits && i < blocks_.size(); ++i) {
-    fits = start.X[i].rows() == blocks_[i].size && start.X[i].cols() == blocks_[i].size &&
-           start.S[i].rows() == blocks_[i].size && start.S[i].cols() == blocks_[i].size;
-  }
-  return fits;
-}
-
-SdpResult DenseSdpSolver::solve_from(const DenseSdpPoint& start, double shift, double recheck_tol) {
-  initial_point();
-  if (accepts(start)) {
-    y_ = start.y;
-    for (std::size_t i = 0; i < blocks_.size(); ++i) {
-      Block& k = blocks_[i];
-      const double tx = shift * std::max(1.0, start.X[i].trace() / k.size);
-      const double ts = shift * std::max(1.0, start.S[i].trace() / k.size);
-      k.X = start.X[i] + tx * Eigen::MatrixXd::Identity(k.size, k.size);
-      k.S = start.S[i] + ts * Eigen::MatrixXd::Identity(k.size, k.size);
-    }
+  for (Block& k : blocks_) {
+    const double tx = shift * std::max(1.0, k.X.trace() / k.size);
+    const double ts = shift * std::max(1.0, k.S.trace() / k.size);
+    k.X.diagonal().array() += tx;
+    k.S.diagonal().array() += ts;
   }
   return iterate(recheck_tol);
 }
@@ -556,7 +586,8 @@ SdpResult DenseSdpSolver::iterate(double recheck_tol) {
 }
 
 /// The result as solve_sdp builds it: y, bᵀy and the eigenvalue re-check of sdp_solver.hpp.
-SdpResult DenseSdpSolver::finish(bool ok, double recheck_tol) const {
+SdpResult DenseSdpSolver::finish(bool ok, double recheck_tol) {
+  has_solution_ = false;
   SdpResult result;
   std::ostringstream os;
   if (!ok || !y_.allFinite()) {
@@ -575,6 +606,7 @@ SdpResult DenseSdpSolver::finish(bool ok, double recheck_tol) const {
     return result;
   }
   result.status = SdpStatus::solved;
+  has_solution_ = true;
   result.y = y_;
   os << "solved (dense, " << info_.iterations << " iterations, objective " << result.objective
      << ")";
@@ -624,20 +656,21 @@ void record_csdp_time(long long nanoseconds) noexcept {
   g_csdp_nanoseconds += nanoseconds;
 }
 
-SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpPoint* warm,
+SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpWorkspace* workspace,
                                double recheck_tol, int* iterations) {
-  DenseSdpSolver solver(problem);
+  std::optional<DenseSdpSolver> local;
+  std::optional<DenseSdpSolver>& slot = workspace != nullptr ? workspace->solver : local;
   SdpResult result;
-  if (warm != nullptr && solver.accepts(*warm)) {
-    result = solver.solve_from(*warm, kDenseSdpWarmShift, recheck_tol);
+  if (slot && slot->reload(problem)) {
+    result = slot->solve_warm(kDenseSdpWarmShift, recheck_tol);
+    if (result.status != SdpStatus::solved) {
+      result = slot->solve(recheck_tol);
+    }
+  } else {
+    slot.emplace(problem);
+    result = slot->solve(recheck_tol);
   }
-  if (result.status != SdpStatus::solved) {
-    result = solver.solve(recheck_tol);
-  }
-  if (warm != nullptr && result.status == SdpStatus::solved) {
-    solver.export_point(*warm);
-  }
-  if (iterations != nullptr) *iterations = solver.info().iterations;
+  if (iterations != nullptr) *iterations = slot->info().iterations;
   return result;
 }
 

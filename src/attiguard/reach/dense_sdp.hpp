@@ -25,6 +25,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <optional>
 #include <vector>
 
 #include "attiguard/reach/sdp_solver.hpp"
@@ -50,12 +51,6 @@ struct DenseSdpInfo {
   double primal_trace{0.0};
 };
 
-/// An iterate of the dense solver (X and S per block, y), kept for a warm start.
-struct DenseSdpPoint {
-  std::vector<Eigen::MatrixXd> X, S;
-  Eigen::VectorXd y;
-};
-
 /// The HKM / Mehrotra solver of dense_sdp.hpp for one LmiProblem; reusable (solve() restarts from
 /// the default infeasible start every time). The problem must outlive the solver and pass
 /// solve_sdp's validation (finite, symmetric, every variable used). Linearly dependent F_i are
@@ -71,14 +66,14 @@ class DenseSdpSolver {
   /// Never reports infeasible: a problem it cannot solve is `failed` (CSDP decides).
   [[nodiscard]] SdpResult solve(double recheck_tol = 1e-9);
 
-  /// The final iterate of the last solve (X, S per block and y), for a warm start.
-  void export_point(DenseSdpPoint& point) const;
-  /// Whether `start` has this problem's shapes (blocks, their sizes, the number of variables).
-  [[nodiscard]] bool accepts(const DenseSdpPoint& start) const noexcept;
-  /// solve() from a previous solver's final iterate shifted by `shift` times its mean eigenvalue
-  /// (at least `shift`) per block; the default start when the shapes differ.
-  [[nodiscard]] SdpResult solve_from(const DenseSdpPoint& start, double shift,
-                                     double recheck_tol = 1e-9);
+  /// Loads another problem of this solver's shape (the same blocks, sizes and term variables,
+  /// in order) into its storage, keeping the last iterate for solve_warm(); false, and nothing
+  /// changed, when the shapes differ. The problem must outlive the next solve.
+  bool reload(const LmiProblem& problem);
+  /// solve() started from the last solve's final iterate, X and S shifted by `shift` times their
+  /// mean eigenvalue (at least `shift`) per block, when that solve returned `solved`; a cold
+  /// solve() otherwise (docs/reach.md, "Dense SDP solver").
+  [[nodiscard]] SdpResult solve_warm(double shift, double recheck_tol = 1e-9);
 
   /// Iterations and final residuals of the last solve() (docs/reach.md, "Dense SDP solver").
   [[nodiscard]] const DenseSdpInfo& info() const noexcept { return info_; }
@@ -109,6 +104,8 @@ class DenseSdpSolver {
   };
 
   SdpResult iterate(double recheck_tol);
+  [[nodiscard]] bool same_shape(const LmiProblem& problem) const noexcept;
+  void load(const LmiProblem& problem);
   bool constraints_independent();
   void initial_point();
   bool factor_and_residuals();
@@ -118,7 +115,7 @@ class DenseSdpSolver {
   double max_step(bool primal, double cap);
   double affine_mu(double ap, double ad) const;
   void update(double ap, double ad);
-  SdpResult finish(bool ok, double recheck_tol) const;
+  SdpResult finish(bool ok, double recheck_tol);
 
   // Kernels on one block, templated on its size (3, 6, 9 fixed; Eigen::Dynamic otherwise).
   template <int N>
@@ -144,6 +141,8 @@ class DenseSdpSolver {
   Eigen::VectorXd b_, y_, dy_, h_, rp_;
   Eigen::MatrixXd M_;
   Eigen::LLT<Eigen::MatrixXd> schur_;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> gram_eig_;  ///< the independence test
+  bool has_solution_{false};  ///< the last solve returned solved: X, S, y are its final iterate
   double norm_b_{0.0}, norm_f0_{0.0}, scale_{1.0};
   bool independent_{true};
 };
@@ -183,18 +182,25 @@ void record_dense_sdp_outcome(bool accepted, int iterations, long long nanosecon
 /// Called by solve_sdp once per CSDP solve (issue 48, docs/reach.md "Dense SDP solver").
 void record_csdp_time(long long nanoseconds) noexcept;
 
-/// Relative shift of a warm start (DenseSdpSolver::solve_from): X and S of the previous solve
+/// Relative shift of a warm start (DenseSdpSolver::solve_warm): X and S of the previous solve
 /// plus 0.1 times their mean eigenvalue (at least 0.1). Measured on the paper's step-0 SDP
 /// against the same SDP at other rates and enclosures: 7–10 iterations instead of 10–17; smaller
 /// shifts start too close to the boundary (docs/reach.md, "Dense SDP solver").
 inline constexpr double kDenseSdpWarmShift = 0.1;
 
-/// One dense solve from `warm` when it holds an iterate of the same shapes (kDenseSdpWarmShift),
-/// else cold; when the warm start does not solve, a cold start. A returned solution's final
-/// iterate is stored into `warm` (nullptr: cold, nothing stored). Issue 48, docs/reach.md
-/// "Dense SDP solver".
-/// `iterations` (if not null) receives the iterations of the returned solve.
-[[nodiscard]] SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpPoint* warm,
-                                             double recheck_tol, int* iterations = nullptr);
+/// A dense solver kept from solve to solve (SdpSettings::warm_start): its storage is reused for
+/// problems of the same shape and its last solution starts the next solve (issue 48,
+/// docs/reach.md "Dense SDP solver"). Not thread-safe: one per run.
+struct DenseSdpWorkspace {
+  std::optional<DenseSdpSolver> solver;
+};
+
+/// One dense solve. With a workspace whose solver has the problem's shape: reload, warm start
+/// (kDenseSdpWarmShift), and a cold start when that does not solve; otherwise a new solver
+/// (kept in the workspace) and a cold start. `iterations` (if not null) receives the iterations
+/// of the returned solve. Issue 48, docs/reach.md "Dense SDP solver".
+[[nodiscard]] SdpResult solve_sdp_dense_warm(const LmiProblem& problem,
+                                             DenseSdpWorkspace* workspace, double recheck_tol,
+                                             int* iterations = nullptr);
 
 }  // namespace attiguard::reach

@@ -56,13 +56,13 @@ class LmiProblem {
 
 /// Solver parameters (CSDP's own names; defaults are CSDP's documented defaults except the
 /// iteration cap). printlevel is always 0.
-struct DenseSdpPoint;
+struct DenseSdpWorkspace;
 
 struct SdpSettings {
   /// The dense solver's warm start (dense_sdp.hpp; issue 48, docs/reach.md "Dense SDP solver"):
-  /// not owned; when set, the dense solver starts from this iterate when its shapes match the
-  /// problem and stores its final iterate back after a solve it returns. nullptr: cold start.
-  DenseSdpPoint* warm_start{nullptr};
+  /// not owned; when set, the dense solver kept there is reused and warm-started when the
+  /// problem has its shape (solve_sdp_dense_warm). nullptr: a new solver, cold start.
+  DenseSdpWorkspace* warm_start{nullptr};
   double axtol{1e-8};
   double atytol{1e-8};
   double objtol{1e-8};

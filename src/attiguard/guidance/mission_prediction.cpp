@@ -134,8 +134,9 @@ FinePhase rct_transfer_phase(const MissionParams& p, const lie::Mat3& R_ib, cons
   const double d_brake = v_p * v_p / (2.0 * b);
   const double coast = std::max(D - d_acc - d_brake, 0.0) / v_p;
   FinePhase f;
-  // The accuracies hold once the speed is below δ_v inside δ_p: the last δ_v of braking is not flown.
-  const double v_end = std::min(p.speed_accuracy, v_p);
+  // The accuracies hold once the speed is below δ_v inside δ_p: on the curve, at δ_p when its
+  // speed there, √(2 b (δ_p − δ_p/2)), is below δ_v, else where it falls to δ_v.
+  const double v_end = std::min({p.speed_accuracy, std::sqrt(b * p.position_accuracy), v_p});
   f.time = std::max(v_p - s, 0.0) / a + coast + (v_p - v_end) / b + other / a_rct;
   f.delta_v = std::max(v_p - s, 0.0) + (v_p - v_end) + other;
   return f;

@@ -91,8 +91,11 @@ void WaypointSequencer::start_leg(const MissionInputs& in) noexcept {
   const bool rct_leg = params_.rct.kappa_p > 0.0 && leg_distance_ <= 0.5 * params_.replan_distance &&
                        !brake_needed(in.v_i.norm());
   mode_ = leg_distance_ <= params_.arrival_radius || rct_leg ? Mode::fine : Mode::align;
-  // Beyond the paper: the RCT fly such a leg near time-optimally, fine control only its end.
-  if (mode_ == Mode::fine && rct_leg && params_.rct_transfer && leg_distance_ > params_.arrival_radius) {
+  // Beyond the paper: the RCT fly such a leg near time-optimally (fine control only what the
+  // transfer cannot resolve), unless the accuracies already hold (a zero-length leg): fine
+  // control then ends the leg at the next sample without a pulse.
+  const bool met = leg_distance_ < params_.position_accuracy && in.v_i.norm() < params_.speed_accuracy;
+  if (mode_ == Mode::fine && rct_leg && params_.rct_transfer && leg_distance_ > params_.arrival_radius && !met) {
     mode_ = Mode::rct_transfer;
     q_hold_ = q_ib_;  // attitude held as it is: the line of sight keeps its RCT acceleration
     return;

@@ -654,5 +654,41 @@ TEST(AllocationFree, MissionStepBrakingALateralAndRecedingStartWithShapedGains) 
   std::printf("Mission transition reasons:%s\n", visited.c_str());
 }
 
+TEST(AllocationFree, MissionStepFlyingRctOnlyLegsInTheRctTransfer) {
+  // Two legs inside half the re-plan distance: the RCT fly them in mode rct_transfer and fine
+  // control takes over near each waypoint (docs/waypoint.md, "The RCT-only legs").
+  guidance::MissionParams p;
+  p.mass = 100.0;
+  p.T_max = 20.0;
+  p.f_max = 0.5;
+  p.cruise_speed = 2.0;
+  p.arrival_radius = 0.01;
+  p.position_accuracy = 0.2;
+  p.speed_accuracy = 0.005;
+  p.replan_distance = 100.0;
+  p.rct = {0.02, 0.5};
+  p.rct.braking_acceleration = 0.5 * p.f_max / p.mass;
+  p.brake_speed = guidance::default_brake_speed(p);
+  p.rct_transfer = true;
+  const control::QuaternionPidGains gains{20.0, 2.0, 20.0, 0.05};
+  const std::array waypoints_i{Vec3(20.0, 10.0, 0.0), Vec3(20.0, -20.0, 5.0)};
+  guidance::WaypointSequencer mission(p, gains, waypoints_i);
+  const dynamics::SpacecraftPlant plant(p.mass, 20.0 * Mat3::Identity());
+
+  guidance::MissionInputs in;
+  in.dt = 0.1;
+  std::set<guidance::Mode> modes;
+  g_allocations = 0;
+  for (int k = 0; k < kCalls && !mission.done(); ++k) {
+    const guidance::MissionCommand cmd = counted([&] { return mission.step(in); });
+    modes.insert(cmd.mode);
+    fly(plant, cmd, in);
+  }
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in WaypointSequencer::step (rct_transfer)";
+  EXPECT_EQ(modes.count(guidance::Mode::rct_transfer), 1U);
+  EXPECT_EQ(modes.count(guidance::Mode::align), 0U);
+  EXPECT_TRUE(mission.done());
+}
+
 }  // namespace
 }  // namespace attiguard

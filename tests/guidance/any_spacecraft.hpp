@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <sstream>
@@ -153,7 +154,58 @@ struct Verdict {
   /// RCT-only leg "fine->fine: accuracy_met", …) [s] (completed runs; docs/waypoint.md, "Craft classes").
   std::map<std::string, double> fine_time_by_entry;
   double total_time{0.0};       ///< the mission time [s] (completed runs)
+  /// Time in mode rct_transfer over the mission time (completed runs; docs/waypoint.md, "The
+  /// RCT-only legs")
+  double transfer_fraction{0.0};
+  /// Σ time of the legs flown by the RCT alone (started in fine or rct_transfer), from the
+  /// leg's start to its waypoint's accuracy [s] (completed runs)
+  double rct_leg_time{0.0};
+  int rct_legs{0};  ///< how many such legs (completed runs)
 };
+
+/// Time per mode and the RCT-only legs of a run, from its transitions (docs/waypoint.md, "The
+/// RCT-only legs"): a leg is RCT-only when it starts (t = 0 or accuracy_met of the previous
+/// waypoint) in fine or rct_transfer.
+struct ModeTimes {
+  double fine{0.0};
+  double transfer{0.0};
+  double rct_leg_time{0.0};
+  int rct_legs{0};
+};
+inline ModeTimes mode_times(const sim::WaypointSimResult& res) {
+  ModeTimes m;
+  const auto rct_mode = [](guidance::Mode mode) {
+    return mode == guidance::Mode::fine || mode == guidance::Mode::rct_transfer;
+  };
+  guidance::Mode mode = res.transitions.empty() ? guidance::Mode::done : res.transitions.front().from;
+  double t0 = 0.0, leg_start = 0.0;
+  bool rct_leg = rct_mode(mode);
+  for (std::size_t i = 0; i <= res.transitions.size(); ++i) {
+    const double t = i < res.transitions.size() ? res.transitions[i].t : res.total_time;
+    if (mode == guidance::Mode::fine) m.fine += t - t0;
+    if (mode == guidance::Mode::rct_transfer) m.transfer += t - t0;
+    if (i == res.transitions.size()) break;
+    const auto& tr = res.transitions[i];
+    if (tr.reason == guidance::TransitionReason::accuracy_met) {
+      if (rct_leg) {
+        m.rct_leg_time += t - leg_start;
+        ++m.rct_legs;
+      }
+      leg_start = t;
+      rct_leg = rct_mode(tr.to);
+    }
+    mode = tr.to;
+    t0 = t;
+  }
+  return m;
+}
+
+/// ATTIGUARD_RCT_TRANSFER=0 flies the RCT-only legs by fine control alone (guidance.rct_transfer
+/// false), for the before/after comparison on the same crafts (docs/waypoint.md, "The RCT-only legs").
+inline void apply_rct_transfer_override(sim::WaypointScenario& sc) {
+  const char* v = std::getenv("ATTIGUARD_RCT_TRANSFER");
+  if (v != nullptr) sc.mission.rct_transfer = std::string(v) != "0";
+}
 
 inline Verdict judge(const Case& c) {
   Verdict v;
@@ -165,6 +217,7 @@ inline Verdict judge(const Case& c) {
     v.reason = e.what();
     return v;
   }
+  apply_rct_transfer_override(sc);
   try {
     const sim::WaypointSimResult res = sim::simulate_waypoint(sc);
     const sim::WaypointOutcome out = sim::waypoint_outcome(sc, res);
@@ -197,8 +250,15 @@ inline Verdict judge(const Case& c) {
     v.fine_fraction = res.total_time > 0.0 ? t_fine / res.total_time : 0.0;
     double t_rct_legs = 0.0;
     for (const auto& [entry, t] : v.fine_time_by_entry) {
-      if (entry.rfind("start->fine", 0) == 0 || entry.rfind("fine->fine", 0) == 0) t_rct_legs += t;
+      if (entry.rfind("start->fine", 0) == 0 || entry.rfind("fine->fine", 0) == 0 ||
+          entry.rfind("rct_transfer->fine", 0) == 0) {
+        t_rct_legs += t;
+      }
     }
+    const ModeTimes mt = mode_times(res);
+    v.transfer_fraction = res.total_time > 0.0 ? mt.transfer / res.total_time : 0.0;
+    v.rct_leg_time = mt.rct_leg_time;
+    v.rct_legs = mt.rct_legs;
     v.rct_leg_fraction = res.total_time > 0.0 ? t_rct_legs / res.total_time : 0.0;
     v.predicted_ratio = predicted > 0.0 ? res.total_time / predicted : 0.0;
   } catch (const NumericalError& e) {

@@ -38,6 +38,22 @@ double median(std::vector<double> x) {
   return n % 2 == 1 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
 }
 
+/// ATTIGUARD_CRAFT_CLASS_DUMP=FILE appends one line per case (class, index, verdict, mission
+/// time, RCT-only legs' time and count, actual/predicted), to pair runs with and without the RCT
+/// transfer (ATTIGUARD_RCT_TRANSFER=0) craft by craft (docs/waypoint.md, "The RCT-only legs").
+void dump_verdicts(const char* cls, const std::vector<Verdict>& verdicts) {
+  const char* path = std::getenv("ATTIGUARD_CRAFT_CLASS_DUMP");
+  if (path == nullptr) return;
+  std::FILE* f = std::fopen(path, "a");
+  if (f == nullptr) return;
+  for (std::size_t k = 0; k < verdicts.size(); ++k) {
+    const Verdict& v = verdicts[k];
+    std::fprintf(f, "%s %zu %d %.3f %.3f %d %.4f %.4f %.4f\n", cls, k, static_cast<int>(v.kind), v.total_time,
+                 v.rct_leg_time, v.rct_legs, v.predicted_ratio, v.fine_fraction, v.transfer_fraction);
+  }
+  std::fclose(f);
+}
+
 /// The first words of a rejection reason (its key path and cause), for the tally.
 std::string reason_class(const std::string& what) {
   const auto key = what.find(": ");
@@ -58,6 +74,7 @@ TEST(AnySpacecraft, EveryRandomCraftIsRejectedWithAReasonOrCompletes) {
     });
   }
   for (std::thread& t : pool) t.join();
+  dump_verdicts("generator", verdicts);
 
   int rejected = 0, completed = 0, incomplete = 0, failed = 0;
   std::vector<double> dv_ratio, t_ratio, p_ratio;
@@ -126,8 +143,9 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
     }
     for (std::thread& t : pool) t.join();
     int rejected = 0, completed = 0, incomplete = 0, failed = 0;
-    std::vector<double> p_ratio, user_ratio, fine, handover_fine;
+    std::vector<double> p_ratio, user_ratio, fine, handover_fine, transfer, mission_time, rct_leg_time;
     std::map<std::string, int> reasons;
+    int rct_legs = 0;
     std::map<std::string, double> fine_by_entry;
     double completed_time = 0.0;
     for (int k = 0; k < runs; ++k) {
@@ -142,6 +160,10 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
         user_ratio.push_back(v.time_ratio);
         fine.push_back(v.fine_fraction);
         handover_fine.push_back(v.fine_fraction - v.rct_leg_fraction);
+        transfer.push_back(v.transfer_fraction);
+        mission_time.push_back(v.total_time);
+        if (v.rct_legs > 0) rct_leg_time.push_back(v.rct_leg_time / v.rct_legs);
+        rct_legs += v.rct_legs;
         completed_time += v.total_time;
         for (const auto& [entry, t] : v.fine_time_by_entry) fine_by_entry[entry] += t;
       } else if (v.kind == Verdict::incomplete) {
@@ -160,6 +182,10 @@ TEST(AnySpacecraft, CraftClassesCompleteWithinOneAndAHalfTimesThePrediction) {
                 class_name(cls), runs, seed, rejected, completed,
                 accepted > 0 ? 100.0 * completed / accepted : 0.0, incomplete, failed, median(p_ratio),
                 quantile(p_ratio, 0.95), median(user_ratio), median(fine), median(handover_fine));
+    std::printf("[ measured ] %-14s rct_transfer share median %.3f; mission time median %.1f s; %d RCT-only "
+                "legs, mean leg time per mission median %.1f s\n",
+                class_name(cls), median(transfer), median(mission_time), rct_legs, median(rct_leg_time));
+    dump_verdicts(class_name(cls), verdicts);
     for (const auto& [why, count] : reasons) std::printf("[  reason  ] %5d  %s\n", count, why.c_str());
     // Where the fine phase's time goes: its share of all completed missions' time by how fine
     // control was entered (docs/waypoint.md, "Craft classes").
@@ -186,10 +212,7 @@ TEST(AnySpacecraft, LargeChemicalCraftsFlyTheirShortLegsFasterWithTheRctAlone) {
     sim::WaypointScenario sc = scenario::parse_waypoint(scenario::parse_document(c.toml, "large_chemical.toml"));
     const sim::WaypointSimResult with_rct_legs = sim::simulate_waypoint(sc);
     ASSERT_TRUE(with_rct_legs.finite) << k;
-    bool rct_leg = !with_rct_legs.transitions.empty() && with_rct_legs.transitions.front().from == guidance::Mode::fine;
-    for (const auto& tr : with_rct_legs.transitions) {
-      rct_leg = rct_leg || (tr.from == guidance::Mode::fine && tr.to == guidance::Mode::fine);
-    }
+    const bool rct_leg = mode_times(with_rct_legs).rct_legs > 0;
     if (!with_rct_legs.completed || !rct_leg) continue;
     sc.mission.replan_distance = std::max(30.0 * sc.mission.position_accuracy, 20.0 * sc.mission.arrival_radius);
     const sim::WaypointSimResult main_engine = sim::simulate_waypoint(sc);

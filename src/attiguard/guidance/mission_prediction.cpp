@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "attiguard/guidance/rct_transfer.hpp"
 #include "attiguard/lie/shortest_arc.hpp"
 
 namespace attiguard::guidance {
@@ -106,6 +107,41 @@ FinePhase rct_leg_phase(const MissionParams& p, const Vec3& e_i, const Vec3& v_i
   return f;
 }
 
+/// An RCT-only leg flown in Mode::rct_transfer from the offset `e_i` with velocity `v_i` and
+/// the attitude R_ib held (guidance/rct_transfer.hpp): full thrust at the RCT's acceleration
+/// along the line of sight in the body up to the braking curve (or V_d, then coast), the curve
+/// at its braking acceleration to rest at δ_p/2, where both accuracies hold. The speed that does
+/// not close on the waypoint is counted as in rct_leg_phase. A leg already within δ_p/2, or
+/// whose curve is below the tracking's resolution 2θ a T_s (rct_transfer_handover_due), is
+/// fine control's (rct_leg_phase).
+FinePhase rct_transfer_phase(const MissionParams& p, const lie::Mat3& R_ib, const Vec3& e_i, const Vec3& v_i,
+                             double control_period) noexcept {
+  const double d = e_i.norm();
+  if (!(d > rct_transfer_stop_distance(p)) || rct_transfer_handover_due(p, R_ib, e_i, v_i, control_period)) {
+    return rct_leg_phase(p, e_i, v_i);
+  }
+  const Vec3 u = e_i / d;
+  const double a = rct_available_acceleration(p, R_ib.transpose() * u);
+  const double b = rct_transfer_braking_acceleration(a);
+  const double s = std::max(closing_speed(e_i, v_i), 0.0);
+  const double other = (v_i - u * s).norm();
+  const double a_rct = p.f_max / p.mass;
+  const double D = d - rct_transfer_stop_distance(p) + other * other / (2.0 * a_rct);
+  // Acceleration from s meets the curve v² = 2 b (D − x) at x = (2bD − s²)/(2(a + b)).
+  const double x = std::max(0.0, (2.0 * b * D - s * s) / (2.0 * (a + b)));
+  const double v_p = std::max({std::min(p.cruise_speed, std::sqrt(s * s + 2.0 * a * x)), s, 1e-12});
+  const double d_acc = std::max(v_p * v_p - s * s, 0.0) / (2.0 * a);
+  const double d_brake = v_p * v_p / (2.0 * b);
+  const double coast = std::max(D - d_acc - d_brake, 0.0) / v_p;
+  FinePhase f;
+  // The accuracies hold once the speed is below δ_v inside δ_p: on the curve, at δ_p when its
+  // speed there, √(2 b (δ_p − δ_p/2)), is below δ_v, else where it falls to δ_v.
+  const double v_end = std::min({p.speed_accuracy, std::sqrt(b * p.position_accuracy), v_p});
+  f.time = std::max(v_p - s, 0.0) / a + coast + (v_p - v_end) / b + other / a_rct;
+  f.delta_v = std::max(v_p - s, 0.0) + (v_p - v_end) + other;
+  return f;
+}
+
 }  // namespace
 
 double predicted_turn_time(const PredictionCraft& craft, double angle, double tolerance) noexcept {
@@ -197,7 +233,8 @@ MissionPrediction predict_mission(const MissionParams& p, const PredictionCraft&
     const double L0 = (wp - p_i).norm();
     const bool slow = !(p.brake_speed > 0.0) || v_i.norm() <= p.brake_speed;
     if (L0 <= p.arrival_radius || (p.rct.kappa_p > 0.0 && L0 <= 0.5 * p.replan_distance && slow)) {
-      const FinePhase fp = rct_leg_phase(p, wp - p_i, v_i);
+      const bool transfer = p.rct_transfer && L0 > p.arrival_radius;
+      const FinePhase fp = transfer ? rct_transfer_phase(p, R_ib, wp - p_i, v_i, craft.control_period) : rct_leg_phase(p, wp - p_i, v_i);
       leg.time = leg.fine_time = fp.time;
       leg.delta_v = fp.delta_v;
       leg.rct_only = true;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "attiguard/guidance/rct_transfer.hpp"
 #include "attiguard/guidance/thrust_laws.hpp"
 #include "attiguard/lie/shortest_arc.hpp"
 
@@ -18,6 +19,7 @@ const char* mode_name(Mode mode) noexcept {
     case Mode::fine: return "fine";
     case Mode::done: return "done";
     case Mode::brake: return "brake";
+    case Mode::rct_transfer: return "rct_transfer";
   }
   return "?";
 }
@@ -38,6 +40,7 @@ const char* reason_name(TransitionReason reason) noexcept {
     case TransitionReason::replan: return "replan";
     case TransitionReason::overshoot: return "overshoot";
     case TransitionReason::lateral_speed: return "lateral_speed";
+    case TransitionReason::handover: return "handover";
   }
   return "?";
 }
@@ -88,6 +91,15 @@ void WaypointSequencer::start_leg(const MissionInputs& in) noexcept {
   const bool rct_leg = params_.rct.kappa_p > 0.0 && leg_distance_ <= 0.5 * params_.replan_distance &&
                        !brake_needed(in.v_i.norm());
   mode_ = leg_distance_ <= params_.arrival_radius || rct_leg ? Mode::fine : Mode::align;
+  // Beyond the paper: the RCT fly such a leg near time-optimally (fine control only what the
+  // transfer cannot resolve), unless the accuracies already hold (a zero-length leg): fine
+  // control then ends the leg at the next sample without a pulse.
+  const bool met = leg_distance_ < params_.position_accuracy && in.v_i.norm() < params_.speed_accuracy;
+  if (mode_ == Mode::fine && rct_leg && params_.rct_transfer && leg_distance_ > params_.arrival_radius && !met) {
+    mode_ = Mode::rct_transfer;
+    q_hold_ = q_ib_;  // attitude held as it is: the line of sight keeps its RCT acceleration
+    return;
+  }
   q_hold_ = chart_accel_;
 }
 
@@ -224,6 +236,18 @@ TransitionReason fine_transition(const MissionParams& p, const LegMeasures& m, M
   return TransitionReason::none;
 }
 
+/// Mode rct_transfer: as fine (accuracy met, re-plan), else to fine when the hand-over is due
+/// (rct_transfer_handover_due) (docs/waypoint.md, "The RCT-only legs").
+TransitionReason rct_transfer_transition(const MissionParams& p, const LegMeasures& m, const MissionInputs& in,
+                                         Mode& next) noexcept {
+  const TransitionReason fine_reason = fine_transition(p, m, next);
+  if (fine_reason != TransitionReason::none) return fine_reason;
+  if (rct_transfer_handover_due(p, in.R_ib, m.e_i, in.v_i, in.dt)) {
+    return go_to(Mode::fine, TransitionReason::handover, next);
+  }
+  return TransitionReason::none;
+}
+
 }  // namespace
 
 TransitionReason WaypointSequencer::state_transition(const MissionInputs& in, Mode& next) const noexcept {
@@ -241,6 +265,7 @@ TransitionReason WaypointSequencer::state_transition(const MissionInputs& in, Mo
       if (m.speed <= params_.main_cutoff_speed) return go_to(Mode::fine, TransitionReason::braked, next);
       break;
     case Mode::fine: return fine_transition(params_, m, next);
+    case Mode::rct_transfer: return rct_transfer_transition(params_, m, in, next);
     case Mode::align:
     case Mode::done:
       break;
@@ -255,7 +280,7 @@ DesiredAttitude WaypointSequencer::evaluate(const MissionInputs& in, const Vec3&
     // roll), re-aimed every sample: a misaligned engine turns the velocity while braking.
     q_hold_ = lie::quat_multiply(lie::shortest_arc_quat(in.R_ib.col(0), Vec3(-in.v_i)), q_ib_);
   }
-  if (mode_ == Mode::fine || mode_ == Mode::done || mode_ == Mode::brake) {
+  if (mode_ == Mode::fine || mode_ == Mode::done || mode_ == Mode::brake || mode_ == Mode::rct_transfer) {
     DesiredAttitude hold;
     hold.q_id = q_hold_;
     hold.error.q_ie = q_hold_;
@@ -406,6 +431,8 @@ MissionCommand WaypointSequencer::step(const MissionInputs& in) noexcept {
   cmd.inputs.thrust = thrust;
   if (mode_ == Mode::fine) {
     set_fine_rct(params_, in, e_i, cmd);
+  } else if (mode_ == Mode::rct_transfer) {
+    fire_rct(params_, rct_transfer_force(params_, in.R_ib, e_i, in.v_i, in.dt), cmd);
   } else if (params_.lateral_rct && (mode_ == Mode::align || mode_ == Mode::accelerate ||
                                      mode_ == Mode::coast || mode_ == Mode::flip)) {
     // Not while decelerating or braking: each RCT pulse turns v̂, which the engine's pointing

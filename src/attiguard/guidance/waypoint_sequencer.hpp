@@ -34,10 +34,14 @@ enum class Mode : int {
   /// speed, entered when the speed left is more than the RCT can stop within half the re-plan
   /// distance (after a closest approach, or before a re-plan); then fine. See brake_speed.
   brake = 7,
+  /// Beyond the paper: an RCT-only leg (a leg within half the re-plan distance) flown by the RCT
+  /// near time-optimally along the line of sight, speed across it nulled (guidance/rct_transfer.hpp;
+  /// docs/waypoint.md, "The RCT-only legs"), attitude held; then fine near the waypoint.
+  rct_transfer = 8,
 };
 
 /// Number of modes (codes 0 … kModeCount − 1).
-inline constexpr int kModeCount = 8;
+inline constexpr int kModeCount = 9;
 
 /// Lower-case name of a mode ("align", …) of the Waypoint paper's Algorithm 1 as a state machine.
 [[nodiscard]] const char* mode_name(Mode mode) noexcept;
@@ -70,6 +74,9 @@ enum class TransitionReason : int {
   /// max(brake speed, V_d/4) before braking: thrust along ê would not remove it, so brake to
   /// rest first and re-plan.
   lateral_speed,
+  /// Beyond the paper: rct_transfer → fine at rest at the end of its braking curve with the
+  /// accuracies not met (guidance::rct_transfer_handover_due).
+  handover,
 };
 
 /// Lower-case name of a transition reason ("pointing_reached", …), Waypoint paper Algorithm 1.
@@ -100,6 +107,10 @@ struct MissionParams {
   /// the miss distance exceeds the arrival radius (control::rct_lateral_force;
   /// beyond the paper; docs/waypoint.md, "Lateral RCT")
   bool lateral_rct{false};
+  /// RCT-only legs are flown in Mode::rct_transfer (guidance/rct_transfer.hpp) instead of by
+  /// fine control's law [Waypoint eq. (28)] alone (beyond the paper; docs/waypoint.md, "The
+  /// RCT-only legs")
+  bool rct_transfer{false};
   VelocityProjectionParams projection{};
   FlipTiming flip_timing{FlipTiming::immediate};
   double flip_lead_time{60.0};        ///< [s], FlipTiming::braking_point only

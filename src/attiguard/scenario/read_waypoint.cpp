@@ -151,6 +151,7 @@ void read_waypoint_attitude_control(const TableReader& root, bool paper,
 void read_waypoint_guidance_required(const TableReader& g, guidance::MissionParams& mp) {
   declare(g, {"profile", "cruise_speed", "acceleration_fraction", "pointing_tolerance", "pointing_error", "arrival_radius",
               "position_accuracy", "speed_accuracy", "braking_margin", "braking_distance", "lateral_rct",
+              "rct_transfer",
               "main_cutoff_speed", "replan_distance", "brake_speed",
               "velocity_projection", "projection_blend_speed", "projection_full_angle_deg",
               "flip_timing", "flip_lead_time"});
@@ -213,6 +214,7 @@ void read_waypoint_guidance_options(const TableReader& g, bool paper, const guid
       g.number_or("brake_speed", DerivedDefault{guidance::default_brake_speed(mp)}, NumberRule::non_negative());
   mp.velocity_projection = g.boolean_or("velocity_projection", true);
   mp.lateral_rct = g.boolean_or("lateral_rct", !paper);
+  mp.rct_transfer = g.boolean_or("rct_transfer", !paper);
   mp.projection.blend_speed = g.number_or(
       "projection_blend_speed", DerivedDefault{paper ? 0.05 : guidance::craft_projection_blend_speed(limits)},
       NumberRule::positive());

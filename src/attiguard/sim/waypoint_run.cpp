@@ -346,6 +346,7 @@ nlohmann::json waypoint_parameters_entry(const WaypointScenario& sc) {
           {"brake_speed", mp.brake_speed},
           {"velocity_projection", mp.velocity_projection},
           {"lateral_rct", mp.lateral_rct},
+          {"rct_transfer", mp.rct_transfer},
           {"projection_blend_speed", mp.projection.blend_speed},
           {"flip_timing", std::string(kFlipTimingNames.name(mp.flip_timing))},
           {"flip_lead_time", mp.flip_lead_time},

@@ -46,7 +46,7 @@ def path(run: Run) -> Path:
     axes[0].set_title(title(run, "path and thrust"))
     axes[0].legend(loc="best", fontsize="small")
     axes[1].plot(t, run.column("thrust"), label="T [N]")
-    axes[1].plot(t, np.asarray(run.column("mode")), label="mode (0 align … 6 done, 7 brake)")
+    axes[1].plot(t, np.asarray(run.column("mode")), label="mode (0 align … 6 done, 7 brake, 8 rct_transfer)")
     axes[1].set_xlabel("t [s]")
     axes[1].legend(loc="best", fontsize="small")
     return save(fig, run, "mission_path.png")

@@ -95,7 +95,7 @@ def position_error(run: Run) -> Path:
     ax.set_ylabel("position error [m]")
     ax.set_title(title(run, "position error"))
     names = run.summary.get("mode_names") or ["align", "accelerate", "coast", "flip",
-                                              "decelerate", "fine", "done", "brake"]
+                                              "decelerate", "fine", "done", "brake", "rct_transfer"]
     axm.step(t, run.column("mode"), where="post")
     axm.set_yticks(range(len(names)))
     axm.set_yticklabels(names)

@@ -116,15 +116,14 @@ BENCHMARK(BM_CsdpSolveOnly)->Unit(benchmark::kMicrosecond);
 // "Dense SDP solver").
 static void BM_PaperSdpPerSolve(benchmark::State& state) {
   const bool dense = state.range(0) != 0;
-  const bool was = ar::dense_sdp_enabled();
-  ar::set_dense_sdp_enabled(dense);
+  ar::ConReachSettings settings;
+  settings.sdp.sdp.solver = dense ? ar::SdpSolverKind::dense : ar::SdpSolverKind::csdp;
   const ar::DenseSdpCounts before = ar::dense_sdp_counts();
   for (auto _ : state) {
-    const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});
+    const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, settings);
     benchmark::DoNotOptimize(res.steps.back().r);
   }
   const ar::DenseSdpCounts after = ar::dense_sdp_counts();
-  ar::set_dense_sdp_enabled(was);
   const double solves =
       static_cast<double>(after.dense + after.csdp - before.dense - before.csdp);
   const double seconds = after.dense_seconds + after.csdp_seconds - before.dense_seconds -

@@ -237,7 +237,7 @@ TEST(DenseSdp, SolveSdpUsesTheDenseSolverAndCountsIt) {
   p.add_constant(c, Eigen::MatrixXd::Constant(1, 1, 2.0));
   p.add_term(c, 0, Eigen::MatrixXd::Constant(1, 1, -1.0));
   p.set_objective(0, -1.0);
-  EXPECT_FALSE(ar::dense_sdp_enabled());  // the default until the figures are recaptured
+  EXPECT_FALSE(ar::dense_sdp_enabled());  // the override is off by default: settings decide
   const dense_sdp_test::DenseFirst dense_first;
   const ar::DenseSdpCounts before = ar::dense_sdp_counts();
   const ar::SdpResult r = ar::solve_sdp(p);

@@ -166,6 +166,7 @@ nlohmann::json summary_json(const ReachScenario& sc, std::size_t cells,
                   {"P0", mat_json(r0.P0)}};
   j["metric"] = std::string(reach::kMetricNames.name(sc.settings.metric));
   j["rigour"] = std::string(reach::kRigourNames.name(sc.settings.rigour));
+  j["sdp_solver"] = std::string(reach::kSdpSolverNames.name(sc.settings.sdp.sdp.solver));
   nlohmann::json steps = nlohmann::json::array();
   for (const ReachStep& st : r0.steps) steps.push_back(step_json(st, verdict));
   j["steps"] = steps;

@@ -31,9 +31,8 @@ namespace attiguard::reach {
 
 namespace {
 
-// Off by default: with it on, ConReach's figures move by ~1e-6 relative (another point of the
-// optimal face, and CSDP's 1e-8 infeasibility), beyond ExampleFigures' 1e-12; switching it on is
-// issue 48's decision together with recapturing the figures (docs/reach.md, "Dense SDP solver").
+// The process-wide switch of set_dense_sdp_enabled (tests, benchmarks): off, each call's
+// SdpSettings::solver decides (docs/reach.md, "Dense SDP solver").
 std::atomic<bool> g_dense_sdp_enabled{false};
 std::atomic<long> g_dense_sdp_accepted{0};
 std::atomic<long> g_dense_sdp_fallback{0};
@@ -270,6 +269,7 @@ bool DenseSdpSolver::constraints_independent() {
 /// SDPT3's infeasible start (Toh, Todd and Tütüncü 1999): per block X = ξ I, S = η I, y = 0, with
 /// ξ = max(10, √s, s·max_i (1 + |b_i|)/(1 + ‖F_i‖)) and η = max(10, √s, ‖F0‖, max_i ‖F_i‖).
 void DenseSdpSolver::initial_point() {
+  limiting_ = {0, 0};
   y_.setZero();
   scale_ = 1.0;
   for (Block& k : blocks_) {
@@ -299,7 +299,7 @@ bool DenseSdpSolver::factor_block(Block& k, Sums& sums) {
   if (!cholesky_lower(S, LS) || !cholesky_lower(X, fixed<N>(k.LX))) {
     return false;
   }
-  lower_inverse(fixed<N>(k.LX), fixed<N>(k.WX));
+  k.wx_ready = false;  // L_X⁻¹ only when a primal step test needs it (block_step)
   lower_inverse(fixed<N>(k.U), fixed<N>(k.W));
   const auto W = fixed<N>(k.W);
   fixed<N>(k.Sinv).noalias() = W.transpose().lazyProduct(W);
@@ -465,6 +465,10 @@ double DenseSdpSolver::block_step(Block& k, bool primal, double cap) {
   if (cholesky_lower(T, U)) {
     return cap;
   }
+  if (primal && !k.wx_ready) {
+    lower_inverse(fixed<N>(k.LX), fixed<N>(k.WX));
+    k.wx_ready = true;
+  }
   const auto Winv = fixed<N>(primal ? k.WX : k.W);  // L⁻¹
   U.noalias() = Winv.lazyProduct(D);
   T.noalias() = U.lazyProduct(Winv.transpose());
@@ -473,13 +477,25 @@ double DenseSdpSolver::block_step(Block& k, bool primal, double cap) {
 }
 
 /// min(cap, largest α with X + α dX ⪰ 0) (primal) or the same for S + α dS: a block whose
-/// V + α D passes a Cholesky test at the current α keeps it; only the others need λ_min.
+/// V + α D passes a Cholesky test at the current α keeps it; only the others need λ_min. The
+/// block that limited the last step of the same kind goes first (it usually limits again, and
+/// the others then pass their test at its α).
 double DenseSdpSolver::max_step(bool primal, double cap) {
   double a = cap;
-  for (Block& k : blocks_) {
-    a = with_block_size(k.size,
-                        [&](auto n) { return block_step<decltype(n)::value>(k, primal, a); });
+  const std::size_t nb = blocks_.size();
+  std::size_t& first = limiting_[primal ? 0 : 1];
+  std::size_t limiting = first;
+  for (std::size_t j = 0; j < nb; ++j) {
+    const std::size_t i = (first + j) % nb;
+    Block& k = blocks_[i];
+    const double ak = with_block_size(
+        k.size, [&](auto n) { return block_step<decltype(n)::value>(k, primal, a); });
+    if (ak < a) {
+      a = ak;
+      limiting = i;
+    }
   }
+  first = limiting;
   return a;
 }
 

@@ -25,6 +25,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -93,7 +94,8 @@ class DenseSdpSolver {
     std::vector<Term> terms;
     Eigen::MatrixXd X, S, Sinv, Rd, dX, dS, dXa, dSa, G, R, T, U;
     Eigen::MatrixXd LX;  ///< the Cholesky factor L_X, upper triangle zero
-    Eigen::MatrixXd WX;  ///< L_X⁻¹ (lower triangular)
+    Eigen::MatrixXd WX;  ///< L_X⁻¹ (lower triangular), valid when wx_ready
+    bool wx_ready{false};
     Eigen::MatrixXd W;   ///< L_S⁻¹ (S⁻¹ = Wᵀ W)
     Eigen::MatrixXd Gs;  ///< column j: P_j = X F_j S⁻¹, s² × terms
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;  ///< blocks of a size not compiled fixed
@@ -142,7 +144,8 @@ class DenseSdpSolver {
   Eigen::MatrixXd M_;
   Eigen::LLT<Eigen::MatrixXd> schur_;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> gram_eig_;  ///< the independence test
-  bool has_solution_{false};  ///< the last solve returned solved: X, S, y are its final iterate
+  bool has_solution_{false};
+  std::array<std::size_t, 2> limiting_{0, 0};  ///< block that limited the last primal / dual step  ///< the last solve returned solved: X, S, y are its final iterate
   double norm_b_{0.0}, norm_f0_{0.0}, scale_{1.0};
   bool independent_{true};
 };
@@ -152,9 +155,9 @@ class DenseSdpSolver {
                                         const DenseSdpSettings& settings = {},
                                         double recheck_tol = 1e-9);
 
-/// Whether solve_sdp tries the dense solver before CSDP (process-wide, atomic). Default off: CSDP
-/// alone, as before issue 48, until ConReach's example figures are recaptured with it on
-/// (docs/reach.md, "Dense SDP solver").
+/// Whether solve_sdp tries the dense solver before CSDP whatever SdpSettings::solver says
+/// (process-wide, atomic; for tests and benchmarks). Default off: each call's
+/// SdpSettings::solver decides (ConReach: dense; docs/reach.md, "Dense SDP solver").
 void set_dense_sdp_enabled(bool enabled) noexcept;
 /// See set_dense_sdp_enabled (issue 48, docs/reach.md "Dense SDP solver").
 [[nodiscard]] bool dense_sdp_enabled() noexcept;

@@ -29,6 +29,13 @@ inline constexpr NameTable<MetricKind, 2> kMetricNames{
 inline constexpr NameTable<Rigour, 2> kRigourNames{
     {{{Rigour::rigorous, "rigorous"}, {Rigour::floating, "float"}}}};
 
+/// The default of `reach.sdp_solver` (docs/scenario-format.md; docs/reach.md, "Dense SDP solver").
+inline constexpr SdpSolverKind kDefaultSdpSolver = SdpSolverKind::dense;
+
+/// Names of SdpSolverKind in scenario files and reach.json (docs/reach.md, "Dense SDP solver").
+inline constexpr NameTable<SdpSolverKind, 2> kSdpSolverNames{
+    {{{SdpSolverKind::csdp, "csdp"}, {SdpSolverKind::dense, "dense"}}}};
+
 /// Everything a `reach` run needs, validated.
 struct ReachScenario {
   std::string name;

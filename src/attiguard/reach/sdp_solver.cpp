@@ -432,7 +432,7 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
   ++g_solve_count;
   // Issue 48 (docs/reach.md, "Dense SDP solver"): the dense HKM solver of dense_sdp.hpp first,
   // outside CSDP's lock; CSDP, the reference, when it does not solve and re-check.
-  if (dense_sdp_enabled()) {
+  if (settings.solver == SdpSolverKind::dense || dense_sdp_enabled()) {
     const long long t0 = thread_cpu_nanoseconds();
     int iterations = 0;
     SdpResult dense = solve_sdp_dense_warm(problem, settings.warm_start, recheck_tol, &iterations);

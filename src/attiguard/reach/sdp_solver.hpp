@@ -58,7 +58,14 @@ class LmiProblem {
 /// iteration cap). printlevel is always 0.
 struct DenseSdpWorkspace;
 
+/// Which solver solve_sdp uses (issue 48; docs/reach.md, "Dense SDP solver").
+enum class SdpSolverKind {
+  csdp,   ///< CSDP alone
+  dense,  ///< the dense solver of dense_sdp.hpp first, CSDP when it does not solve
+};
+
 struct SdpSettings {
+  SdpSolverKind solver{SdpSolverKind::csdp};
   /// The dense solver's warm start (dense_sdp.hpp; issue 48, docs/reach.md "Dense SDP solver"):
   /// not owned; when set, the dense solver kept there is reused and warm-started when the
   /// problem has its shape (solve_sdp_dense_warm). nullptr: a new solver, cold start.

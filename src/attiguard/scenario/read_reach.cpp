@@ -95,7 +95,7 @@ void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reac
   const TableReader r = root.table("reach");
   declare(r, {"horizon", "steps", "rate_mode", "line_search_steps", "rate_step", "min_diagonal",
               "substeps", "integrator_step", "attitude_floor_ratio", "min_enclosure_candidates",
-              "metric", "rigour", "max_bisections"});
+              "metric", "rigour", "max_bisections", "sdp_solver"});
   s.horizon = r.number("horizon", NumberRule::positive());
   // Without `steps` the analysis chooses its step lengths (docs/reach.md, "Adaptive steps").
   s.adaptive = !r.has("steps");
@@ -109,6 +109,7 @@ void parse_settings(const TableReader& root, const reach::ClosedLoop& loop, reac
                                                     : reach::MetricKind::product);
   check_rate_keys(r, loop.lmi_depends_on_attitude(), s);
   s.rigour = enum_or(r, "rigour", reach::kRigourNames, reach::Rigour::rigorous);
+  s.sdp.sdp.solver = enum_or(r, "sdp_solver", reach::kSdpSolverNames, reach::kDefaultSdpSolver);
   s.line_search_steps = static_cast<int>(r.integer_or("line_search_steps", 3, 1, 1000));
   s.rate_step = r.number_or("rate_step", 0.01, NumberRule::positive());
   s.min_diagonal = r.number_or("min_diagonal", 0.01, NumberRule::non_negative());

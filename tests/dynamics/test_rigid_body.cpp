@@ -49,5 +49,24 @@ TEST(RigidBody, EulerEquationsMatchTheFormula) {
   EXPECT_NEAR(body.max_principal_moment(), 3.0, 1e-14);
 }
 
+// A diagonal J takes the path without the products by its zeros: the same bits as the dense
+// products J⁻¹((J ω) × ω + τ) (docs/performance.md, "Lean core (issue 48, item 2)"); a rotated J
+// takes the dense path.
+TEST(RigidBody, DiagonalInertiaGivesTheDenseProductsBitForBit) {
+  const Mat3 Q = test::random_rotation();
+  const Mat3 rotated = Q * diag(1, 2, 3) * Q.transpose();
+  for (const Mat3& J : {diag(1, 2, 3), diag(0.02, 0.03, 0.025), Mat3(0.5 * (rotated + rotated.transpose()))}) {
+    const RigidBody body(J);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 w = test::random_vector_in_ball(i % 2 == 0 ? 3.0 : 1e-3);
+      const Vec3 tau = test::random_vector_in_ball(1.0);
+      const Vec3 dense =
+          body.inertia_inverse() * ((body.inertia() * w).cross(w) + tau);
+      const Vec3 got = body.angular_acceleration(w, tau);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(got(k), dense(k));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace attiguard::dynamics

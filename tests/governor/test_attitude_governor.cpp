@@ -214,6 +214,50 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
   EXPECT_GT(moving, 100);  // both branches of ξ were compared
 }
 
+// figures() is evaluate() without ρ_n and ξ: every other field bit for bit the same
+// (docs/performance.md, "Lean core (issue 48, item 2)").
+TEST(AttitudeGovernor, FiguresAreEvaluateWithoutTheFieldBitForBit) {
+  const std::vector<ConeConstraint> cones{paper_cone(),
+                                          keep_in_cone(Vec3(1, 0, 0), Vec3(0, 1, 0), 2.0)};
+  GovernorParams robust = paper_params();
+  robust.bounded_step = true;
+  robust.robust = RobustMargin{};
+  robust.robust->epsilon = 0.05;
+  robust.robust->delta = 0.1;
+  robust.robust->measurement_margin = 0.01;
+  robust.robust->max_reference_step = 0.1;
+  const std::vector<GovernorParams> variants{paper_params(GovernorMode::pet),
+                                             paper_params(GovernorMode::continuous),
+                                             paper_params(GovernorMode::none), robust};
+  for (const GovernorParams& p : variants) {
+    const AttitudeGovernor gov(p, cones);
+    for (int i = 0; i < 200; ++i) {
+      const Mat3 R = test::random_rotation();
+      const Mat3 R_g = test::random_rotation();
+      const Mat3 R_d = test::random_rotation();
+      const Vec3 w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
+      const TieBreak tie{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+      for (const bool flag : {true, false}) {
+        const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
+        const GovernorOutput lean = gov.figures(R, w, R_g, R_d, flag, tie);
+        EXPECT_TRUE(lean.rho.isZero(0.0));
+        EXPECT_TRUE(lean.xi_g.isZero(0.0));
+        EXPECT_EQ(lean.tau_b, full.tau_b);
+        EXPECT_EQ(lean.R_g, full.R_g);
+        EXPECT_EQ(lean.V, full.V);
+        EXPECT_EQ(lean.W, full.W);
+        EXPECT_EQ(lean.gamma_d, full.gamma_d);
+        EXPECT_EQ(lean.gamma_g, full.gamma_g);
+        EXPECT_EQ(lean.gamma, full.gamma);
+        EXPECT_EQ(lean.trigger, full.trigger);
+        EXPECT_EQ(lean.tie_break.active, full.tie_break.active);
+        EXPECT_EQ(lean.cone_count, full.cone_count);
+        EXPECT_EQ(lean.margins, full.margins);
+      }
+    }
+  }
+}
+
 /// A hand-written flight loop: the body is propagated with RK4 under a torque held over each
 /// control period (zero-order hold, as on board), the governor is stepped at 100 Hz.
 struct LoopResult {

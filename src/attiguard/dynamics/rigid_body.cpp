@@ -45,6 +45,8 @@ RigidBody::RigidBody(const Mat3& J) {
   const Vec3 moments = lie::symmetric_eigenvalues(J_);
   lambda_min_ = moments(0);
   lambda_max_ = moments(2);
+  const Mat3 off = Mat3::Ones() - Mat3::Identity();
+  diagonal_ = J_.cwiseProduct(off).isZero(0.0) && J_inv_.cwiseProduct(off).isZero(0.0);
 }
 
 }  // namespace attiguard::dynamics

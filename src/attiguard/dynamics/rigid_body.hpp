@@ -30,8 +30,14 @@ class RigidBody {
   /// Largest principal moment λ_max(J).
   [[nodiscard]] double max_principal_moment() const noexcept { return lambda_max_; }
 
-  /// ω̇ = J⁻¹((J ω) × ω + τ) [PET-ERG eq. (1)]; allocation-free.
+  /// ω̇ = J⁻¹((J ω) × ω + τ) [PET-ERG eq. (1)]; allocation-free. With J diagonal (principal axes)
+  /// the products by its zeros are left out: for finite arguments the same result as the dense
+  /// products (docs/performance.md, "Lean core (issue 48, item 2)").
   [[nodiscard]] Vec3 angular_acceleration(const Vec3& omega_b, const Vec3& tau_b) const noexcept {
+    if (diagonal_) {
+      const Vec3 Jw = J_.diagonal().cwiseProduct(omega_b);
+      return J_inv_.diagonal().cwiseProduct(Jw.cross(omega_b) + tau_b);
+    }
     return J_inv_ * ((J_ * omega_b).cross(omega_b) + tau_b);
   }
   /// Rotational kinetic energy ½ ωᵀ J ω.
@@ -48,6 +54,7 @@ class RigidBody {
   Mat3 J_inv_;
   double lambda_min_{0.0};
   double lambda_max_{0.0};
+  bool diagonal_{false};  ///< J and J⁻¹ have exactly zero off-diagonal entries
 };
 
 }  // namespace attiguard::dynamics

@@ -132,14 +132,15 @@ bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
   return pet_trigger(gamma(R_g), decision_level(R_ib, omega_b, R_g), params_.c_gamma);
 }
 
-GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
-                                          const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
+GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                         const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
   GovernorOutput out;
   out.R_g = params_.mode == GovernorMode::none ? R_d : R_g;
-  out.tau_b = torque(R_ib, omega_b, out.R_g);
-  out.V = lyapunov(R_ib, omega_b, out.R_g);
+  // RᵀR_g once for τ [PET-ERG eq. (3)] and V, each formed from it as pd_torque and pd_lyapunov do.
+  const Mat3 R_e = R_ib.transpose() * out.R_g;
+  out.tau_b = params_.gains.kp * lie::vee(lie::sk(R_e)) - params_.gains.kd * omega_b;
+  out.V = 0.5 * omega_b.dot(params_.J * omega_b) + params_.gains.kp * lie::phi(R_e);
   out.W = params_.robust ? level(R_ib, omega_b, out.R_g) : out.V;
-  const double decided = params_.robust ? out.W + params_.robust->measurement_margin : out.V;
   out.gamma_d = gamma_d_;
   out.gamma_g = gamma_g(out.R_g);
   out.gamma = gamma_of(out.gamma_g);
@@ -147,13 +148,9 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   switch (params_.mode) {
     case GovernorMode::pet:
       out.tie_break = tie;
-      out.rho = held_field(out.R_g, R_d, tie);
-      out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       break;
     case GovernorMode::continuous:
       out.tie_break = tie;
-      out.rho = held_field(out.R_g, R_d, tie);
-      out.xi_g = erg_reference_rate(params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
       out.trigger = true;
       break;
     case GovernorMode::none:
@@ -164,6 +161,26 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   out.cone_count = cones_.size();
   for (int i = 0; i < cones_.size(); ++i) {
     out.margins[static_cast<std::size_t>(i)] = pointing_margin(cones_[i], R_ib);
+  }
+  return out;
+}
+
+GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                          const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
+  GovernorOutput out = figures(R_ib, omega_b, R_g, R_d, flag, tie);
+  const double decided = params_.robust ? out.W + params_.robust->measurement_margin : out.V;
+  switch (params_.mode) {
+    case GovernorMode::pet:
+      out.rho = held_field(out.R_g, R_d, tie);
+      out.xi_g = pet_reference_rate(flag, params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
+      break;
+    case GovernorMode::continuous:
+      out.rho = held_field(out.R_g, R_d, tie);
+      out.xi_g = erg_reference_rate(params_.kappa, out.gamma, decided, out.rho, params_.epsilon);
+      break;
+    case GovernorMode::none:
+    case GovernorMode::planned:  // refused by the constructor
+      break;
   }
   return out;
 }

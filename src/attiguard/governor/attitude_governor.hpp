@@ -145,6 +145,12 @@ class AttitudeGovernor {
   /// with the detour (docs/pet-erg.md, section 4, "Saddles: the tie-break").
   [[nodiscard]] GovernorOutput evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                         const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
+  /// evaluate() without ρ_n and ξ (both left 0): τ (3), V, W, Γ's, the flag and the margins of
+  /// [PET-ERG eq. (2b)], bit for bit those of evaluate(), for the simulator's figures at the
+  /// integrator's steps where no output row needs ρ_n (docs/performance.md, "Lean core (issue 48,
+  /// item 2)") [PET-ERG eqs. (3), (5), (2b)].
+  [[nodiscard]] GovernorOutput figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                       const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
   /// τ and ξ of evaluate() alone, bit for bit the same, for the integrator's stages
   /// [PET-ERG eqs. (3)-(6)]: no margins of [PET-ERG eq. (2b)], Γ_g once, and V, Γ and ρ_n only
   /// where ξ needs them (not with the flag of [PET-ERG eq. (5)] down, ρ_n not when Γ ≤ V).

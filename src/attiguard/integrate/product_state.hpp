@@ -51,14 +51,22 @@ struct ProductState {
   }
 };
 
-/// y ⊕ δ = (R_j exp(δ_j), x + δ_x): the retraction the RKMK methods move along.
+/// y ⊕ δ = (R_j exp(δ_j), x + δ_x): the retraction the RKMK methods move along, R_j exp(δ_j) as
+/// lie::times_exp with lie::chart_coefficients (docs/performance.md, "Lean core (issue 48, item 2)").
 template <int K, int N>
 [[nodiscard]] ProductState<K, N> retract(const ProductState<K, N>& y,
                                          const typename ProductState<K, N>::Tangent& delta) noexcept {
   using S = ProductState<K, N>;
   S out;
   for (int j = 0; j < K; ++j) {
-    out.R[j] = y.R[j] * lie::exp(S::rot_block(delta, j));
+    const lie::Vec3 w = S::rot_block(delta, j);
+    const auto jj = static_cast<std::size_t>(j);
+    if (w.isZero(0.0)) {  // a factor at rest (e.g. a held reference): exp(0) = I
+      out.R[jj] = y.R[jj];
+      continue;
+    }
+    const lie::ExpCoefficients k = lie::chart_coefficients(w);
+    out.R[jj] = lie::times_exp(y.R[jj], w, k.a, k.b);
   }
   out.x = y.x + S::euclidean_block(delta);
   return out;
@@ -93,21 +101,24 @@ template <int K, int N>
   return out;
 }
 
-/// One RKMK stage's chart at Ω: the point y ⊕ Ω and the rotation blocks' J_r⁻¹(Ω_j) of
-/// dexpinv_body, from one sin and one cos per factor (exp and J_r⁻¹ share θ = ‖Ω_j‖). Bit-for-bit
-/// retract(y, Ω) and dexpinv_body(Ω, ·) (Munthe-Kaas 1998, BIT 38; docs/performance.md, "Lean core").
+/// One RKMK stage's chart at Ω: the point y ⊕ Ω (retract) and what dexpinv_body(Ω, ·) needs,
+/// Ω_j and the coefficient c of J_r⁻¹(Ω_j); exp and J_r⁻¹ share lie::chart_coefficients
+/// (Munthe-Kaas 1998, BIT 38; docs/performance.md, "Lean core (issue 48, item 2)").
 template <int K, int N>
 struct StageChart {
-  ProductState<K, N> point;            ///< y ⊕ Ω
-  std::array<lie::Mat3, K> jr_inverse;  ///< J_r⁻¹(Ω_j)
+  ProductState<K, N> point;        ///< y ⊕ Ω
+  std::array<lie::Vec3, K> omega;  ///< Ω_j
+  std::array<double, K> c;         ///< c(‖Ω_j‖) of J_r⁻¹(Ω_j) = I + ½ Ω̂_j + c Ω̂_j²
 
-  /// dexpinv_body(Ω, ξ): J_r⁻¹(Ω_j) ξ_j on the rotation blocks, ξ_x on the Euclidean one.
+  /// dexpinv_body(Ω, ξ): J_r⁻¹(Ω_j) ξ_j on the rotation blocks (lie::apply_right_jacobian_inverse,
+  /// two cross products), ξ_x on the Euclidean one (Munthe-Kaas 1998, BIT 38).
   [[nodiscard]] typename ProductState<K, N>::Tangent dexpinv(
       const typename ProductState<K, N>::Tangent& xi) const noexcept {
     using S = ProductState<K, N>;
     typename S::Tangent out;
     for (int j = 0; j < K; ++j) {
-      S::rot_block(out, j) = jr_inverse[static_cast<std::size_t>(j)] * S::rot_block(xi, j);
+      const auto jj = static_cast<std::size_t>(j);
+      S::rot_block(out, j) = lie::apply_right_jacobian_inverse(omega[jj], c[jj], S::rot_block(xi, j));
     }
     S::euclidean_block(out) = S::euclidean_block(xi);
     return out;
@@ -121,12 +132,17 @@ template <int K, int N>
   using S = ProductState<K, N>;
   StageChart<K, N> chart;
   for (int j = 0; j < K; ++j) {
-    const auto Omega_j = S::rot_block(Omega, j);
-    const lie::Vec3 w = Omega_j;
-    const lie::ExpCoefficients k = lie::exp_coefficients(w);
+    const lie::Vec3 w = S::rot_block(Omega, j);
     const auto jj = static_cast<std::size_t>(j);
-    chart.point.R[jj] = y.R[jj] * lie::rodrigues(w, k.a, k.b);
-    chart.jr_inverse[jj] = lie::right_jacobian_inverse_of(w, k.c);
+    chart.omega[jj] = w;
+    if (w.isZero(0.0)) {  // a factor at rest (e.g. a held reference): exp(0) = I, J_r⁻¹(0) = I
+      chart.point.R[jj] = y.R[jj];
+      chart.c[jj] = 1.0 / 12.0;
+      continue;
+    }
+    const lie::ExpCoefficients k = lie::chart_coefficients(w);
+    chart.point.R[jj] = lie::times_exp(y.R[jj], w, k.a, k.b);
+    chart.c[jj] = k.c;
   }
   chart.point.x = y.x + S::euclidean_block(Omega);
   return chart;

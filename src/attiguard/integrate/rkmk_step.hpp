@@ -44,7 +44,7 @@ template <class State, int S, class F>
         Omega += (h * tab.a[i][j]) * k[j];
       }
     }
-    // exp(Ω_j) for the stage's point and J_r⁻¹(Ω_j) for dexpinv share sin θ and cos θ.
+    // exp(Ω_j) for the stage's point and J_r⁻¹(Ω_j) for dexpinv share lie::chart_coefficients.
     const StageChart<K, N> chart = stage_chart<K, N>(y0, Omega);
     last_raw = f(t0 + tab.c[i] * h, chart.point);
     k[i] = chart.dexpinv(last_raw);

@@ -22,28 +22,12 @@ namespace attiguard::lie {
 /// Inverse right Jacobian J_r⁻¹(w) = J_l⁻¹(−w).
 [[nodiscard]] Mat3 right_jacobian_inverse(const Vec3& w) noexcept;
 
-/// J_r⁻¹(w) = I + ½ ŵ + c ŵ² with c of exp_coefficients(w), written out entry by entry: the
-/// operations Eigen performs for right_jacobian_inverse's I − ½·hat(−w) + c·(hat(−w)·hat(−w))
-/// (evaluated as (c·hat(−w))·hat(−w)) without the products by the zeros, so the result is
-/// bit-for-bit right_jacobian_inverse(w) (Munthe-Kaas 1998, BIT 38; docs/performance.md, "Lean core").
-[[nodiscard]] inline Mat3 right_jacobian_inverse_of(const Vec3& w, double c) noexcept {
-  const double x = w.x();
-  const double y = w.y();
-  const double z = w.z();
-  const double cx = c * x;
-  const double cy = c * y;
-  const double cz = c * z;
-  Mat3 J;
-  J(0, 0) = 1.0 + (-(cz * z) - cy * y);
-  J(1, 1) = 1.0 + (-(cz * z) - cx * x);
-  J(2, 2) = 1.0 + (-(cy * y) - cx * x);
-  J(0, 1) = -(0.5 * z) + cy * x;
-  J(1, 0) = 0.5 * z + cx * y;
-  J(0, 2) = 0.5 * y + cz * x;
-  J(2, 0) = -(0.5 * y) + cx * z;
-  J(1, 2) = -(0.5 * x) + cz * y;
-  J(2, 1) = 0.5 * x + cy * z;
-  return J;
+/// J_r⁻¹(w) v = v + ½ w × v + c w × (w × v) with c of chart_coefficients(w) (lie/so3.hpp): the
+/// dexpinv of the RKMK stages as two cross products, no 3×3 matrix (Munthe-Kaas 1998, BIT 38;
+/// docs/performance.md, "Lean core (issue 48, item 2)").
+[[nodiscard]] inline Vec3 apply_right_jacobian_inverse(const Vec3& w, double c, const Vec3& v) noexcept {
+  const Vec3 u = w.cross(v);
+  return v + (0.5 * u + c * w.cross(u));
 }
 
 /// dexp_w(v) = J_l(w) v (Iserles, Munthe-Kaas, Nørsett, Zanna 2000, "Lie-group methods", §2).

@@ -42,7 +42,7 @@ struct ExpCoefficients {
 
 /// exp's and J_r⁻¹'s coefficients at w [ConReach Sec. 2] (docs/performance.md, "Lean core").
 /// The same operations as exp and right_jacobian_inverse apply separately, so the results are
-/// bit-for-bit theirs; the RKMK stage (integrate/rkmk_step.hpp) calls sin and cos once for both.
+/// bit-for-bit theirs (the RKMK stages use chart_coefficients instead).
 [[nodiscard]] inline ExpCoefficients exp_coefficients(const Vec3& w) noexcept {
   const double theta2 = w.squaredNorm();
   const double theta = std::sqrt(theta2);
@@ -54,6 +54,57 @@ struct ExpCoefficients {
   const double s = std::sin(theta);
   const double co = std::cos(theta);
   return {s / theta, (1.0 - co) / theta2, 1.0 / theta2 - (1.0 + co) / (2.0 * theta * s)};
+}
+
+/// The coefficients a, b, c of ExpCoefficients for the charts of the RKMK stages
+/// (integrate/product_state.hpp; docs/performance.md, "Lean core (issue 48, item 2)") [ConReach
+/// Sec. 2]: for θ² < 10⁻² their Taylor series in θ² to degree 4, with no square root, sine,
+/// cosine or division; the first term left out is below 3·10⁻¹⁸ of each coefficient at θ = 0.1,
+/// so the series is exact to double precision there (and has none of the cancellation of
+/// 1 − cos θ and 1/θ² − …). For θ² ≥ 10⁻² the closed forms of exp_coefficients.
+[[nodiscard]] inline ExpCoefficients chart_coefficients(const Vec3& w) noexcept {
+  const double t2 = w.squaredNorm();
+  if (t2 < 1e-2) {
+    const double t4 = t2 * t2;
+    const double t6 = t4 * t2;
+    const double t8 = t4 * t4;
+    // Estrin's scheme: (p0 + p1 θ²) + θ⁴ (p2 + p3 θ²) + p4 θ⁸, three products deep.
+    const double a = (1.0 - (1.0 / 6.0) * t2) + ((1.0 / 120.0) * t4 - (1.0 / 5040.0) * t6) +
+                     (1.0 / 362880.0) * t8;
+    const double b = (0.5 - (1.0 / 24.0) * t2) + ((1.0 / 720.0) * t4 - (1.0 / 40320.0) * t6) +
+                     (1.0 / 3628800.0) * t8;
+    const double c = (1.0 / 12.0 + (1.0 / 720.0) * t2) + ((1.0 / 30240.0) * t4 + (1.0 / 1209600.0) * t6) +
+                     (1.0 / 47900160.0) * t8;
+    return {a, b, c};
+  }
+  const double theta = std::sqrt(t2);
+  const double s = std::sin(theta);
+  const double co = std::cos(theta);
+  return {s / theta, (1.0 - co) / t2, 1.0 / t2 - (1.0 + co) / (2.0 * theta * s)};
+}
+
+/// R exp(ŵ) = R + a R ŵ + b (R ŵ) ŵ, Rodrigues' formula [ConReach Sec. 2] multiplied out with R
+/// (coefficients of chart_coefficients or exp_coefficients): row r of R ŵ is R_r × w, so R ŵ
+/// and (R ŵ) ŵ need no coefficient and are formed while a and b are computed; the rotation is
+/// not re-projected (docs/performance.md, "Lean core (issue 48, item 2)").
+[[nodiscard]] inline Mat3 times_exp(const Mat3& R, const Vec3& w, double a, double b) noexcept {
+  Mat3 out;
+  for (int r = 0; r < 3; ++r) {
+    const double u0 = R(r, 0);
+    const double u1 = R(r, 1);
+    const double u2 = R(r, 2);
+    // m = R_r × w, n = m × w.
+    const double m0 = u1 * w.z() - u2 * w.y();
+    const double m1 = u2 * w.x() - u0 * w.z();
+    const double m2 = u0 * w.y() - u1 * w.x();
+    const double n0 = m1 * w.z() - m2 * w.y();
+    const double n1 = m2 * w.x() - m0 * w.z();
+    const double n2 = m0 * w.y() - m1 * w.x();
+    out(r, 0) = u0 + (a * m0 + b * n0);
+    out(r, 1) = u1 + (a * m1 + b * n1);
+    out(r, 2) = u2 + (a * m2 + b * n2);
+  }
+  return out;
 }
 
 /// Rodrigues' formula exp(ŵ) = I + a ŵ + b ŵ² [ConReach Sec. 2] with the coefficients of

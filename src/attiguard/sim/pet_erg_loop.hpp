@@ -6,6 +6,7 @@
 /// a run and the flight loop's disturbance on the plant. Simulation code (allocates; not the
 /// flight loop).
 
+#include <type_traits>
 #include <vector>
 
 #include "attiguard/governor/attitude_governor.hpp"
@@ -62,15 +63,28 @@ PetErgState pet_erg_initial_state(const PetErgScenario& sc);
 /// momentum ratios, the momenta at the end, and Γ_d's upper bracket of the wheel polytope.
 void finish_wheels(const PetErgScenario& sc, const HeldActuation& actuation, PetErgResult& r);
 
+/// monitor(t, s, row) when the monitor takes whether its output goes into a row (it may then
+/// leave out what only rows read), monitor(t, s) otherwise.
+template <class Monitor>
+auto call_monitor(Monitor& monitor, double t, const PetErgState& s, bool row) {
+  if constexpr (std::is_invocable_v<Monitor&, double, const PetErgState&, bool>) {
+    return monitor(t, s, row);
+  } else {
+    return monitor(t, s);
+  }
+}
+
 /// The run from t = 0 over the stop plan of `sc` (both loops): `monitor` at t = 0, at every
 /// integrator step and at every stop; at each stop `at_stop(stop, t, state)` first (sampling or
-/// the control instant); rows to `on_output` at t = 0 and at the output stops.
+/// the control instant); rows to `on_output` at t = 0 and at the output stops (call_monitor says
+/// the monitor which of its calls feed a row).
 template <class Field, class Monitor, class AtStop, class Observer>
 integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const Field& field, PetErgState& y,
                                                  Monitor& monitor, AtStop& at_stop,
                                                  const Observer& on_output) {
+  const bool rows = static_cast<bool>(on_output);
   {
-    const auto out0 = monitor(0.0, y);
+    const auto out0 = call_monitor(monitor, 0.0, y, rows);
     if (on_output) {
       on_output(0.0, y, sc.desired.at(0.0), out0);
     }
@@ -81,13 +95,13 @@ integrate::IntegrationStats integrate_over_stops(const PetErgScenario& sc, const
   auto on_stop = [&](double t, PetErgState& s) {
     const Stop& stop = plan[next++];
     at_stop(stop, t, s);
-    const auto out = monitor(t, s);
+    const auto out = call_monitor(monitor, t, s, stop.output && rows);
     if (stop.output && on_output) {
       on_output(t, s, sc.desired.at(t), out);
     }
     return true;
   };
-  auto on_step = [&](double t, const PetErgState& s) { (void)monitor(t, s); };
+  auto on_step = [&](double t, const PetErgState& s) { (void)call_monitor(monitor, t, s, false); };
   return integrate::integrate(field, y, 0.0, times, sc.integrator, on_stop, on_step);
 }
 

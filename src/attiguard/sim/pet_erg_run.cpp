@@ -51,9 +51,11 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
     d.segment<3>(6) = body.angular_acceleration(s.x, out.tau_b);  // [PET-ERG eq. (1)]
     return d;
   };
-  auto monitor = [&](double t, const PetErgState& s) -> GovernorOutput {
+  // ρ_n and ξ only where a row is written; the figures folded at every step read neither.
+  auto monitor = [&](double t, const PetErgState& s, bool row) -> GovernorOutput {
     const Mat3 R_d = sc.desired.at(t);
-    const GovernorOutput out = gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag, tie);
+    const GovernorOutput out = row ? gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag, tie)
+                                   : gov.figures(s.R[0], s.x, s.R[1], R_d, flag, tie);
     record(sc, r, t, R_d, s.R[0], out);
     return out;
   };
@@ -112,7 +114,7 @@ class PetErgFlightLoop {
   /// From t = 0 to the end over the stop plan, the control instants at their stops.
   integrate::IntegrationStats fly(PetErgState& y, const PetErgRowObserver& on_output) {
     auto field = [this](double t, const PetErgState& s) { return this->field(t, s); };
-    auto monitor = [this](double t, const PetErgState& s) { return this->monitor(t, s); };
+    auto monitor = [this](double t, const PetErgState& s, bool row) { return this->monitor(t, s, row); };
     auto at_stop = [this](const Stop& stop, double t, PetErgState& s) {
       if (stop.control) {
         control(t, s);
@@ -142,10 +144,12 @@ class PetErgFlightLoop {
   }
 
   /// The governor's view of the true state with the torque actually applied, the margins of the
-  /// true constraints (with robust margins the governor enforces tightened cones).
-  GovernorOutput view(const PetErgState& s, const Mat3& R_d) const {
-    GovernorOutput out =
-        gov_.evaluate(s.R[0] * bias_frame_, s.x, s.R[1], R_d, gov_.trigger_flag(), gov_.tie_break());
+  /// true constraints (with robust margins the governor enforces tightened cones); ρ_n and ξ only
+  /// for a row.
+  GovernorOutput view(const PetErgState& s, const Mat3& R_d, bool row) const {
+    const Mat3 R_seen = s.R[0] * bias_frame_;
+    GovernorOutput out = row ? gov_.evaluate(R_seen, s.x, s.R[1], R_d, gov_.trigger_flag(), gov_.tie_break())
+                             : gov_.figures(R_seen, s.x, s.R[1], R_d, gov_.trigger_flag(), gov_.tie_break());
     out.tau_b = actuation_.torque_b();
     for (std::size_t i = 0; i < sc_.cones.size(); ++i) {
       out.margins[i] = governor::pointing_margin(sc_.cones[i], s.R[0]);
@@ -153,10 +157,11 @@ class PetErgFlightLoop {
     return out;
   }
 
-  /// t = 0, every integrator step and every stop: the figures and the wheels' momenta.
-  GovernorOutput monitor(double t, const PetErgState& s) {
+  /// t = 0, every integrator step and every stop: the figures and the wheels' momenta (`row`:
+  /// the output goes into a row).
+  GovernorOutput monitor(double t, const PetErgState& s, bool row) {
     const Mat3 R_d = sc_.desired.at(t);
-    const GovernorOutput out = view(s, R_d);
+    const GovernorOutput out = view(s, R_d, row);
     record(sc_, r_, t, R_d, s.R[0], out);
     actuation_.observe_momenta(t);
     return out;

@@ -176,11 +176,12 @@ TEST(AttitudeGovernor, EvaluateExposesEveryQuantity) {
   EXPECT_LE((none.evaluate(R, w, R, R_d, true).R_g - R_d).norm(), 0.0);
 }
 
-// rates() is evaluate()'s τ and ξ bit for bit, in every mode, with the flag up and down, a held
-// tie-break, robust margins, states inside and outside {V ≤ Γ}.
-TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
-  const std::vector<ConeConstraint> cones{paper_cone(),
-                                          keep_in_cone(Vec3(1, 0, 0), Vec3(0, 1, 0), 2.0)};
+// The cones and the four modes (pet, continuous, none, robust) on which the lean evaluations are
+// compared with evaluate() bit for bit.
+std::vector<ConeConstraint> lean_check_cones() {
+  return {paper_cone(), keep_in_cone(Vec3(1, 0, 0), Vec3(0, 1, 0), 2.0)};
+}
+std::vector<GovernorParams> lean_check_variants() {
   GovernorParams robust = paper_params();
   robust.bounded_step = true;
   robust.robust = RobustMargin{};
@@ -188,9 +189,15 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
   robust.robust->delta = 0.1;
   robust.robust->measurement_margin = 0.01;
   robust.robust->max_reference_step = 0.1;
-  const std::vector<GovernorParams> variants{paper_params(GovernorMode::pet),
-                                             paper_params(GovernorMode::continuous),
-                                             paper_params(GovernorMode::none), robust};
+  return {paper_params(GovernorMode::pet), paper_params(GovernorMode::continuous),
+          paper_params(GovernorMode::none), robust};
+}
+
+// rates() is evaluate()'s τ and ξ bit for bit, in every mode, with the flag up and down, a held
+// tie-break, robust margins, states inside and outside {V ≤ Γ}.
+TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
+  const std::vector<ConeConstraint> cones = lean_check_cones();
+  const std::vector<GovernorParams> variants = lean_check_variants();
   int moving = 0;
   for (const GovernorParams& p : variants) {
     const AttitudeGovernor gov(p, cones);
@@ -217,18 +224,8 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
 // figures() is evaluate() without ρ_n and ξ: every other field bit for bit the same
 // (docs/performance.md, "Lean core (issue 48, item 2)").
 TEST(AttitudeGovernor, FiguresAreEvaluateWithoutTheFieldBitForBit) {
-  const std::vector<ConeConstraint> cones{paper_cone(),
-                                          keep_in_cone(Vec3(1, 0, 0), Vec3(0, 1, 0), 2.0)};
-  GovernorParams robust = paper_params();
-  robust.bounded_step = true;
-  robust.robust = RobustMargin{};
-  robust.robust->epsilon = 0.05;
-  robust.robust->delta = 0.1;
-  robust.robust->measurement_margin = 0.01;
-  robust.robust->max_reference_step = 0.1;
-  const std::vector<GovernorParams> variants{paper_params(GovernorMode::pet),
-                                             paper_params(GovernorMode::continuous),
-                                             paper_params(GovernorMode::none), robust};
+  const std::vector<ConeConstraint> cones = lean_check_cones();
+  const std::vector<GovernorParams> variants = lean_check_variants();
   for (const GovernorParams& p : variants) {
     const AttitudeGovernor gov(p, cones);
     for (int i = 0; i < 200; ++i) {

@@ -72,6 +72,27 @@ TEST(ReachCli, NonSpdMetricIsInvalidInput) {
   EXPECT_EQ(attiguard::test::count_lines(r.err), 1);
 }
 
+TEST(ReachCli, SdpSolverKeyChoosesTheSolverAndRefusesAnUnknownOne) {
+  // reach.sdp_solver (docs/scenario-format.md; docs/reach.md, "Dense SDP solver"): "dense" and the
+  // default "csdp" give the same verdict, reach.json names the solver; another name is exit 2 at
+  // its key, in one line.
+  for (const char* solver : {"dense", "csdp"}) {
+    const std::string extra = std::string("sdp_solver = \"") + solver + "\"\n";
+    const auto p = write_scenario(std::string("solver_") + solver, paper_body("", extra));
+    const auto out = p.parent_path() / "out";
+    const auto r = run_cli("reach '" + p.string() + "' --out '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(read_file(out / "reach.json"));
+    EXPECT_EQ(j["sdp_solver"], solver);
+    EXPECT_EQ(j["verdict"], "not_requested");
+  }
+  const auto bad = write_scenario("solver_bad", paper_body("", "sdp_solver = \"fast\"\n"));
+  const auto r = run_cli("reach '" + bad.string() + "' --out '" + (bad.parent_path() / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("reach.sdp_solver"), std::string::npos) << r.err;
+  EXPECT_EQ(attiguard::test::count_lines(r.err), 1);
+}
+
 TEST(ReachCli, NanIsInvalidInput) {
   const auto p = write_scenario("nan", paper_body("", "rate_step = nan\n"));
   const auto r = run_cli("reach '" + p.string() + "' --out '" + (p.parent_path() / "out").string() + "'");

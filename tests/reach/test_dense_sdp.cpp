@@ -246,10 +246,17 @@ TEST(DenseSdp, SolveSdpUsesTheDenseSolverAndCountsIt) {
   EXPECT_NEAR(r.y(0), 1.0, 1e-8);
   EXPECT_EQ(ar::dense_sdp_counts().dense, before.dense + 1);
   ar::set_dense_sdp_enabled(false);
-  const ar::SdpResult rc = ar::solve_sdp(p);
+  ar::SdpSettings csdp_only;
+  csdp_only.solver = ar::SdpSolverKind::csdp;
+  const ar::SdpResult rc = ar::solve_sdp(p, csdp_only);
   ASSERT_EQ(rc.status, ar::SdpStatus::solved);
   EXPECT_EQ(rc.csdp_code, 0);
   EXPECT_EQ(ar::dense_sdp_counts().dense, before.dense + 1);
+  // The default settings choose the dense solver (SdpSolverKind::dense, issue 48).
+  const ar::SdpResult rd = ar::solve_sdp(p);
+  ASSERT_EQ(rd.status, ar::SdpStatus::solved);
+  EXPECT_EQ(rd.csdp_code, -1);
+  EXPECT_EQ(ar::dense_sdp_counts().dense, before.dense + 2);
 }
 
 TEST(DenseSdp, PaperStepZeroMetricAgreesWithCsdp) {

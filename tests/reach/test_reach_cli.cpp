@@ -73,8 +73,8 @@ TEST(ReachCli, NonSpdMetricIsInvalidInput) {
 }
 
 TEST(ReachCli, SdpSolverKeyChoosesTheSolverAndRefusesAnUnknownOne) {
-  // reach.sdp_solver (docs/scenario-format.md; docs/reach.md, "Dense SDP solver"): "dense" and the
-  // default "csdp" give the same verdict, reach.json names the solver; another name is exit 2 at
+  // reach.sdp_solver (docs/scenario-format.md; docs/reach.md, "Dense SDP solver"): "dense" (the default) and
+  // "csdp" give the same verdict, reach.json names the solver; another name is exit 2 at
   // its key, in one line.
   for (const char* solver : {"dense", "csdp"}) {
     const std::string extra = std::string("sdp_solver = \"") + solver + "\"\n";

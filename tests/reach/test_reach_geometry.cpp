@@ -81,6 +81,34 @@ TEST(ReachGeodesic, ChartDynamics26MatchGeodesicEquation24) {
   }
 }
 
+// A long geodesic of an anisotropic metric: the step count follows ‖w0‖ and κ (geodesic_steps),
+// so the default 64 steps give the endpoint of a 20 000-step reference; 64 fixed steps did not.
+TEST(ReachGeodesic, LongGeodesicsOfAnisotropicMetricsTakeEnoughSteps) {
+  const ar::Mat3 Q = ar::Vec3(1.0, 2.0, 8.0).asDiagonal();
+  const ar::Mat3 R0 = attiguard::lie::exp(ar::Vec3(0.3, -0.2, 0.1));
+  for (const ar::Vec3& w0 : {ar::Vec3(6.0, 0.5, 0.3), ar::Vec3(0.2, 4.0, 1.5), ar::Vec3(2.0, 2.0, 2.5)}) {
+    const ar::Mat3 R_ref = ar::geodesic_endpoint(Q, R0, w0, 20000);
+    EXPECT_GT(ar::geodesic_steps(Q, w0), 64.0);
+    EXPECT_LT(attiguard::lie::distance(ar::geodesic_endpoint(Q, R0, w0), R_ref), 1e-7) << w0.transpose();
+  }
+  // Steps beyond kMaxGeodesicSteps: a NumericalError, never a non-finite endpoint.
+  const ar::Mat3 Q_bad = ar::Vec3(1.0, 1.0, 1e4).asDiagonal();
+  EXPECT_THROW((void)ar::geodesic_endpoint(Q_bad, R0, ar::Vec3(300.0, 0.0, 0.0)), attiguard::NumericalError);
+}
+
+// A ball with r/√λ_max(Q) ≥ π is all of SO(3): no boundary rows (the corpus loop 34 ends with a
+// ball of radius 3.9e7 whose geodesics overflowed the fixed-step integrator).
+TEST(ReachBoundary, ABallCoveringSo3HasNoBoundary) {
+  const ar::Mat3 Q = ar::Vec3(0.91, 0.93, 0.94).asDiagonal();
+  const ar::Mat3 Rc = attiguard::lie::exp(ar::Vec3(0.5, 0.1, -0.3));
+  EXPECT_TRUE(ar::ball_covers_rotations(Q, 3.9e7));
+  EXPECT_TRUE(ar::ball_boundary_atlas(Q, 3.9e7, Rc, 50).empty());
+  const double r_edge = M_PI * std::sqrt(0.94);
+  EXPECT_TRUE(ar::ball_covers_rotations(Q, r_edge * (1 + 1e-12)));
+  EXPECT_FALSE(ar::ball_covers_rotations(Q, r_edge * (1 - 1e-12)));
+  EXPECT_EQ(ar::ball_boundary_atlas(Q, 0.999 * r_edge, Rc, 50).size(), 50U);
+}
+
 TEST(ReachGeodesic, ChartInverseRoundTripAndBestChart) {
   for (int k = 0; k < 100; ++k) {
     const ar::Mat3 R = random_rotation();

@@ -46,8 +46,11 @@ std::vector<Vec3> ball_boundary(const Mat3& Q, double r, const Mat3& Rc, int cha
   return out;
 }
 
+bool ball_covers_rotations(const Mat3& Q, double r) { return r / std::sqrt(lambda_max(Q)) >= std::numbers::pi; }
+
 std::vector<AtlasPoint> ball_boundary_atlas(const Mat3& Q, double r, const Mat3& Rc, int points, int ode_steps) {
   std::vector<AtlasPoint> out;
+  if (ball_covers_rotations(Q, r)) return out;
   for (int j = 0; j < points; ++j) {
     const Mat3 R1 = geodesic_endpoint(Q, Rc, initial_velocity(Q, r, points, j), ode_steps);
     const int chart = best_chart(R1);

@@ -27,10 +27,15 @@ struct AtlasPoint {
   Vec3 r{Vec3::Zero()};
 };
 
+/// True when B_Q(R_c, r) is all of SO(3): r/√λ_max(Q) ≥ π, so the ball holds the bi-invariant
+/// ball of radius π, which is SO(3) (docs/reach.md, "Representation"). Such a ball has no boundary.
+[[nodiscard]] bool ball_covers_rotations(const Mat3& Q, double r);
+
 /// Boundary points of B_Q(R_c, r) for a ball that fits no single chart ("beyond one chart",
 /// docs/reach.md "Representation"): each geodesic of (24) is integrated on SO(3) itself
 /// (geodesic_endpoint: no chart to leave) and its endpoint given in the chart where it is
-/// nearest the chart's centre (best_chart). Same Fibonacci directions as ball_boundary.
+/// nearest the chart's centre (best_chart). Same Fibonacci directions as ball_boundary. None
+/// for a ball that covers SO(3) (ball_covers_rotations).
 [[nodiscard]] std::vector<AtlasPoint> ball_boundary_atlas(const Mat3& Q, double r, const Mat3& Rc, int points,
                                                           int ode_steps = 64);
 

@@ -63,8 +63,8 @@ struct ConReachSettings {
   /// For closed loops whose LMI depends on R: Q ⪰ ratio·λ_min(Q_i)·I in the SDP, so that the
   /// G_Q-geodesics of the ball stay in the attitude ball of radius r_i/√(ratio·λ_min(Q_i)).
   double attitude_floor_ratio{0.5};
-  /// The per-step SDP's settings (CSDP by default; `sdp.sdp.solver = SdpSolverKind::dense` or
-  /// dense_metric_sdp_settings() for the dense solver first; issue 48, docs/reach.md "Dense SDP
+  /// The per-step SDP's settings (the dense solver first, CSDP when it does not solve;
+  /// `sdp.sdp.solver = SdpSolverKind::csdp` for CSDP alone; issue 48, docs/reach.md "Dense SDP
   /// solver").
   MetricSdpSettings sdp;
   /// Step lengths chosen by the analysis (docs/reach.md, "Adaptive steps"); `steps` is then

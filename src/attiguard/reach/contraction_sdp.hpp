@@ -67,14 +67,6 @@ struct MetricSdpSettings {
   SdpSettings sdp;
 };
 
-/// MetricSdpSettings with the dense solver first (SdpSolverKind::dense): ConReach's default
-/// (issue 48; docs/reach.md, "Dense SDP solver").
-[[nodiscard]] inline MetricSdpSettings dense_metric_sdp_settings() {
-  MetricSdpSettings s;
-  s.sdp.solver = SdpSolverKind::dense;
-  return s;
-}
-
 /// Outcome of one SDP at a fixed rate.
 struct MetricSolution {
   bool ok{false};

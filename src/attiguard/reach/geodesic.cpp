@@ -7,6 +7,7 @@
 #include "attiguard/core/errors.hpp"
 #include "attiguard/integrate/integrator.hpp"
 #include "attiguard/integrate/product_state.hpp"
+#include "attiguard/reach/metrics.hpp"
 
 namespace attiguard::reach {
 
@@ -49,14 +50,27 @@ Mat3 exp_atlas_f(const Vec3& r) {
   return Mat3::Identity() + 0.5 * rh + k * rh * rh;
 }
 
+double geodesic_steps(const Mat3& Q, const Vec3& w0) {
+  const double kappa = lambda_max(Q) / lambda_min(Q);
+  const double w_max = w0.norm() * std::sqrt(kappa);
+  return std::ceil(10.0 * w_max * std::max(1.0, kappa - 1.0));
+}
+
 Mat3 geodesic_endpoint(const Mat3& Q, const Mat3& R0, const Vec3& w0, int steps) {
   using State = integrate::ProductState<1, 3>;
+  const double needed = std::max(static_cast<double>(std::max(1, steps)), geodesic_steps(Q, w0));
+  if (!(needed <= kMaxGeodesicSteps)) {
+    std::ostringstream os;
+    os << "geodesic [ConReach eq. (24)]: " << needed << " RKMK4 steps needed (|w0| = " << w0.norm()
+       << ", condition " << lambda_max(Q) / lambda_min(Q) << "), more than " << kMaxGeodesicSteps;
+    throw NumericalError(os.str());
+  }
   State y;
   y.R[0] = R0;
   y.x = w0;
   integrate::IntegratorSettings s;
   s.method = integrate::Method::rkmk4;
-  s.step = 1.0 / std::max(1, steps);
+  s.step = 1.0 / needed;
   integrate::RkmkIntegrator<State> integ(s);
   double t = 0.0;
   auto f = [&Q](double, const State& st) {

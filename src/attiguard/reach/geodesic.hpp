@@ -30,8 +30,18 @@ namespace attiguard::reach {
 [[nodiscard]] Mat3 exp_atlas_f(const Vec3& r);
 
 /// Endpoint R(1) of the geodesic (24) from R0 with initial reduced velocity w0 (RKMK4 on
-/// SO(3) × R³ with `steps` equal steps). Its G_Q-length is √(w0ᵀQw0) (w is Q-norm preserving).
+/// SO(3) × R³ with equal steps, at least `steps` and at least geodesic_steps(Q, w0)). Its
+/// G_Q-length is √(w0ᵀQw0) (w is Q-norm preserving). Throws NumericalError when more than
+/// kMaxGeodesicSteps steps would be needed.
 [[nodiscard]] Mat3 geodesic_endpoint(const Mat3& Q, const Mat3& R0, const Vec3& w0, int steps = 64);
+
+/// Most RKMK4 steps geodesic_endpoint takes for one geodesic.
+inline constexpr double kMaxGeodesicSteps = 1e5;
+
+/// The steps geodesic_endpoint needs for w0 (docs/reach.md, "Representation"): w keeps wᵀQw, so
+/// ‖w‖ ≤ ‖w0‖√κ (κ = λ_max/λ_min of Q), and (24) turns w at the rate ‖ẇ‖/‖w‖ ≤ (κ − 1)‖w‖
+/// (w × Qw = w × (Q − λ_min I)w); each step then turns R and w by at most 0.1 rad.
+[[nodiscard]] double geodesic_steps(const Mat3& Q, const Vec3& w0);
 
 /// Endpoint r(1) of [ConReach eq. (26)] in chart `chart` from r(0) = Ψ_chart(R0), w(0) = w0 (classical RK4
 /// in R⁶, `steps` equal steps). Throws NumericalError when the curve reaches ‖r‖ ≥ π − 1e-6

@@ -30,7 +30,7 @@ inline constexpr NameTable<Rigour, 2> kRigourNames{
     {{{Rigour::rigorous, "rigorous"}, {Rigour::floating, "float"}}}};
 
 /// The default of `reach.sdp_solver` (docs/scenario-format.md; docs/reach.md, "Dense SDP solver").
-inline constexpr SdpSolverKind kDefaultSdpSolver = SdpSolverKind::csdp;
+inline constexpr SdpSolverKind kDefaultSdpSolver = SdpSolverKind::dense;
 
 /// Names of SdpSolverKind in scenario files and reach.json (docs/reach.md, "Dense SDP solver").
 inline constexpr NameTable<SdpSolverKind, 2> kSdpSolverNames{

@@ -61,11 +61,11 @@ struct DenseSdpWorkspace;
 /// Which solver solve_sdp uses (issue 48; docs/reach.md, "Dense SDP solver").
 enum class SdpSolverKind {
   csdp,   ///< CSDP alone
-  dense,  ///< the dense solver of dense_sdp.hpp first, CSDP when it does not solve
+  dense,  ///< the dense solver of dense_sdp.hpp first, CSDP when it does not solve (the default)
 };
 
 struct SdpSettings {
-  SdpSolverKind solver{SdpSolverKind::csdp};
+  SdpSolverKind solver{SdpSolverKind::dense};
   /// The dense solver's warm start (dense_sdp.hpp; issue 48, docs/reach.md "Dense SDP solver"):
   /// not owned; when set, the dense solver kept there is reused and warm-started when the
   /// problem has its shape (solve_sdp_dense_warm). nullptr: a new solver, cold start.

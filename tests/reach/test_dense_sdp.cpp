@@ -198,7 +198,7 @@ TEST(DenseSdp, LargestEigenvalueInClosedForm) {
   }
 }
 
-TEST(DenseSdp, InfeasibleProblemsAreNotSolvedAndCsdpReportsThem) {
+TEST(DenseSdp, InfeasibleProblemsAreReportedAsSuchByBothSolvers) {
   // y ≥ 1 and y ≤ −1; and y diag(1, −1, 0) − I ⪰ 0.
   ar::LmiProblem p(1);
   const int a = p.add_block(1);
@@ -213,15 +213,27 @@ TEST(DenseSdp, InfeasibleProblemsAreNotSolvedAndCsdpReportsThem) {
   q.add_constant(c, -Eigen::MatrixXd::Identity(3, 3));
   q.add_term(c, 0, Eigen::Vector3d(1.0, -1.0, 0.0).asDiagonal().toDenseMatrix());
   q.set_objective(0, 1.0);
-  const dense_sdp_test::DenseFirst dense_first;
+  ar::SdpSettings csdp_only;
+  csdp_only.solver = ar::SdpSolverKind::csdp;
   for (const ar::LmiProblem* prob : {&p, &q}) {
-    const ar::SdpResult d = ar::solve_sdp_dense(*prob);
-    EXPECT_NE(d.status, ar::SdpStatus::solved);
-    EXPECT_FALSE(d.message.empty());
+    // The dense solver ends with an X ⪰ 0 bounding ‖y‖ over the feasible set from below by
+    // ≥ 1e4 max{1, ‖y‖}: infeasible, and solve_sdp does not call CSDP (docs/reach.md).
+    ar::DenseSdpSolver solver(*prob);
+    const ar::SdpResult d = solver.solve();
+    EXPECT_EQ(d.status, ar::SdpStatus::infeasible) << d.message;
+    EXPECT_TRUE(solver.info().infeasible);
+    EXPECT_GE(solver.info().feasible_y_norm_bound, 1e4);
+    EXPECT_NE(d.message.find("infeasible"), std::string::npos) << d.message;
     const ar::DenseSdpCounts before = ar::dense_sdp_counts();
     const ar::SdpResult r = ar::solve_sdp(*prob);
     EXPECT_EQ(r.status, ar::SdpStatus::infeasible) << r.message;
-    EXPECT_EQ(ar::dense_sdp_counts().fallback, before.fallback + 1);
+    EXPECT_EQ(r.csdp_code, -1);
+    const ar::DenseSdpCounts after = ar::dense_sdp_counts();
+    EXPECT_EQ(after.infeasible, before.infeasible + 1);
+    EXPECT_EQ(after.fallback, before.fallback);
+    EXPECT_EQ(after.csdp, before.csdp);
+    // CSDP, the reference, agrees.
+    EXPECT_EQ(ar::solve_sdp(*prob, csdp_only).status, ar::SdpStatus::infeasible);
   }
 }
 

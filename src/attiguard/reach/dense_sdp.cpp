@@ -36,6 +36,7 @@ namespace {
 std::atomic<bool> g_dense_sdp_enabled{false};
 std::atomic<long> g_dense_sdp_accepted{0};
 std::atomic<long> g_dense_sdp_fallback{0};
+std::atomic<long> g_dense_sdp_infeasible{0};
 std::atomic<long> g_csdp_solves{0};
 std::atomic<long> g_dense_sdp_iterations{0};
 std::atomic<long long> g_dense_sdp_nanoseconds{0};
@@ -334,6 +335,10 @@ bool DenseSdpSolver::factor_and_residuals() {
   for (const Block& k : blocks_) {
     info_.primal_trace += k.X.trace();
   }
+  const double ax = (b_ - rp_).norm();  // ‖A(X)‖
+  info_.feasible_y_norm_bound = sums.f0x < 0.0 ? -sums.f0x / ax : 0.0;
+  info_.infeasible = info_.feasible_y_norm_bound >=
+                     settings_.infeasibility_ratio * std::max(1.0, y_.norm());
   return std::isfinite(info_.relative_gap) && std::isfinite(info_.primal_infeasibility) &&
          std::isfinite(info_.dual_infeasibility);
 }
@@ -568,6 +573,7 @@ SdpResult DenseSdpSolver::iterate(double recheck_tol) {
       ok = true;
       break;
     }
+    if (info_.infeasible) break;
     const double big = settings_.divergence * scale_;
     if (it == settings_.max_iterations || y_.cwiseAbs().maxCoeff() > big) break;
     double xs = 0.0;
@@ -595,7 +601,7 @@ SdpResult DenseSdpSolver::iterate(double recheck_tol) {
     if (!(ap > 1e-10) && !(ad > 1e-10)) break;
     update(ap, ad);
   }
-  if (!ok) {
+  if (!ok && !info_.infeasible) {
     ok = converged(settings_.loose_tolerance);
   }
   return finish(ok, recheck_tol);
@@ -606,6 +612,14 @@ SdpResult DenseSdpSolver::finish(bool ok, double recheck_tol) {
   has_solution_ = false;
   SdpResult result;
   std::ostringstream os;
+  if (!ok && info_.infeasible) {
+    result.status = SdpStatus::infeasible;
+    os << "dense SDP: the LMIs are infeasible (after " << info_.iterations
+       << " iterations an X ⪰ 0 shows that every feasible y has ‖y‖ ≥ "
+       << info_.feasible_y_norm_bound << ")";
+    result.message = os.str();
+    return result;
+  }
   if (!ok || !y_.allFinite()) {
     os << "dense SDP: not solved in " << info_.iterations << " iterations (gap "
        << info_.relative_gap << ", infeasibility " << info_.primal_infeasibility << " / "
@@ -644,6 +658,7 @@ DenseSdpCounts dense_sdp_counts() noexcept {
   DenseSdpCounts c;
   c.dense = g_dense_sdp_accepted.load();
   c.fallback = g_dense_sdp_fallback.load();
+  c.infeasible = g_dense_sdp_infeasible.load();
   c.csdp = g_csdp_solves.load();
   c.dense_iterations = g_dense_sdp_iterations.load();
   c.dense_seconds = static_cast<double>(g_dense_sdp_nanoseconds.load()) * 1e-9;
@@ -657,10 +672,12 @@ long long thread_cpu_nanoseconds() noexcept {
   return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
 }
 
-void record_dense_sdp_outcome(bool accepted, int iterations, long long nanoseconds) noexcept {
-  if (accepted) {
+void record_dense_sdp_outcome(SdpStatus status, int iterations, long long nanoseconds) noexcept {
+  if (status == SdpStatus::solved) {
     ++g_dense_sdp_accepted;
     g_dense_sdp_iterations += iterations;
+  } else if (status == SdpStatus::infeasible) {
+    ++g_dense_sdp_infeasible;
   } else {
     ++g_dense_sdp_fallback;
   }
@@ -679,7 +696,7 @@ SdpResult solve_sdp_dense_warm(const LmiProblem& problem, DenseSdpWorkspace* wor
   SdpResult result;
   if (slot && slot->reload(problem)) {
     result = slot->solve_warm(kDenseSdpWarmShift, recheck_tol);
-    if (result.status != SdpStatus::solved) {
+    if (result.status == SdpStatus::failed) {
       result = slot->solve(recheck_tol);
     }
   } else {

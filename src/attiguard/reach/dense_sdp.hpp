@@ -39,6 +39,9 @@ struct DenseSdpSettings {
   double loose_tolerance{1e-8};  ///< accepted when the iteration stalls (CSDP's objtol)
   int max_iterations{60};
   double divergence{1e12};  ///< max |X|, |y| beyond this: failed (likely infeasible; CSDP decides)
+  /// An iterate X ⪰ 0 with −⟨F0, X⟩ ≥ ratio·max{1, ‖y‖}·‖A(X)‖ ends the solve as `infeasible`:
+  /// every feasible y then has ‖y‖ ≥ −⟨F0, X⟩/‖A(X)‖ (docs/reach.md, "Dense SDP solver").
+  double infeasibility_ratio{1e4};
 };
 
 /// What the last solve did.
@@ -50,6 +53,10 @@ struct DenseSdpInfo {
   /// tr X at the end: bᵀy' ≥ p* − ε tr X* for any y' with λ_min(F0 + A*(y')) ≥ −ε, so a solution
   /// infeasible by ε (CSDP's, about 1e-8) may lie that far below the optimum.
   double primal_trace{0.0};
+  /// −⟨F0, X⟩/‖A(X)‖ of the last iterate (0 when ⟨F0, X⟩ ≥ 0): a lower bound on ‖y‖ over the
+  /// feasible set of the LMIs (X ⪰ 0 makes ⟨F0 + A*(y), X⟩ ≥ 0 for every feasible y).
+  double feasible_y_norm_bound{0.0};
+  bool infeasible{false};  ///< the bound exceeded infeasibility_ratio·max{1, ‖y‖}
 };
 
 /// The HKM / Mehrotra solver of dense_sdp.hpp for one LmiProblem; reusable (solve() restarts from
@@ -167,7 +174,8 @@ void set_dense_sdp_enabled(bool enabled) noexcept;
 /// thread spent in each solver (the dense time includes the attempts that fell back).
 struct DenseSdpCounts {
   long dense{0};
-  long fallback{0};
+  long fallback{0};             ///< dense solves neither solved nor infeasible: CSDP called
+  long infeasible{0};           ///< dense solves that ended with the infeasibility bound
   long csdp{0};                ///< CSDP solves (fallbacks and solves with the dense path off)
   long dense_iterations{0};    ///< iterations of the accepted dense solves
   double dense_seconds{0.0};
@@ -181,7 +189,7 @@ struct DenseSdpCounts {
 [[nodiscard]] DenseSdpCounts dense_sdp_counts() noexcept;
 /// Called by solve_sdp once per solve with the dense path enabled (issue 48, docs/reach.md).
 /// `nanoseconds` of thread CPU time, `iterations` of the solver.
-void record_dense_sdp_outcome(bool accepted, int iterations, long long nanoseconds) noexcept;
+void record_dense_sdp_outcome(SdpStatus status, int iterations, long long nanoseconds) noexcept;
 /// Called by solve_sdp once per CSDP solve (issue 48, docs/reach.md "Dense SDP solver").
 void record_csdp_time(long long nanoseconds) noexcept;
 

@@ -436,10 +436,9 @@ SdpResult solve_sdp(const LmiProblem& problem, const SdpSettings& settings, doub
     const long long t0 = thread_cpu_nanoseconds();
     int iterations = 0;
     SdpResult dense = solve_sdp_dense_warm(problem, settings.warm_start, recheck_tol, &iterations);
-    const bool accepted = dense.status == SdpStatus::solved;
-    record_dense_sdp_outcome(accepted, iterations, thread_cpu_nanoseconds() - t0);
-    if (accepted) {
-      return dense;
+    record_dense_sdp_outcome(dense.status, iterations, thread_cpu_nanoseconds() - t0);
+    if (dense.status != SdpStatus::failed) {
+      return dense;  // solved and re-checked, or infeasible by the bound of DenseSdpInfo
     }
   }
   const ScopedCsdpTimer csdp_timer;

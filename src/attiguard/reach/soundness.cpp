@@ -7,7 +7,9 @@
 #include <random>
 
 #include "attiguard/core/errors.hpp"
+#include "attiguard/reach/ball_membership.hpp"
 #include "attiguard/reach/metrics.hpp"
+#include "attiguard/reach/simulate.hpp"
 #include "attiguard/parallel/parallel_for.hpp"
 
 namespace attiguard::reach {
@@ -17,14 +19,21 @@ namespace {
 /// sphere of the initial ball, where rounding gives ratios of 1 ± 1e-16.
 constexpr double kRoundoff = 1e-12;
 
-/// How far (R, ω) lies outside the attitude ball and the ω box (0 inside, up to rounding).
-double excess(const AttitudeBall& att, const Box3& box, const Mat3& R, const Vec3& w) {
-  double e = lie::distance(att.center, R) - att.radius * (1.0 + kRoundoff);
+/// How far (R, ω) lies outside the attitude ball and the ω box (0 inside, up to rounding). The
+/// ball's test (ball_membership.hpp) skips the distance only where it proves it ≤ 0, which the
+/// final max with 0 would erase: the value is the one of the exact distance.
+double excess(const AttitudeBallTest& att, const Box3& box, const Mat3& R, const Vec3& w) {
+  double e = att.excess_or_zero(R);
   for (int k = 0; k < 3; ++k) {
     const double tol = kRoundoff * (1.0 + std::abs(w(k)));
     e = std::max({e, box.lo(k) - tol - w(k), w(k) - box.hi(k) - tol});
   }
   return std::max(e, 0.0);
+}
+
+/// The membership test of an attitude ball at the check's tolerance radius·(1 + 10⁻¹²).
+AttitudeBallTest ball_test(const AttitudeBall& att) {
+  return {att.center, att.radius * (1.0 + kRoundoff)};
 }
 
 Vec3 sample_ball(std::mt19937_64& g, double radius, bool on_boundary) {
@@ -64,6 +73,8 @@ struct PointIndex {
   std::vector<double> times;
   std::vector<std::pair<std::size_t, std::size_t>> segment;
   std::vector<long> ball;
+  std::vector<AttitudeBallTest> segment_test;  ///< per global segment: its attitude ball
+  std::vector<AttitudeBallTest> step_test;     ///< per step: the attitude ball of U_i
 };
 
 PointIndex index_points(const ReachResult& res) {
@@ -73,7 +84,11 @@ PointIndex index_points(const ReachResult& res) {
   ix.ball[0] = 0;
   for (std::size_t i = 0; i < res.steps.size(); ++i) {
     const std::size_t n = res.steps[i].state_tube.size();
-    for (std::size_t j = 0; j < n; ++j) ix.segment.emplace_back(i, j);
+    for (std::size_t j = 0; j < n; ++j) {
+      ix.segment.emplace_back(i, j);
+      ix.segment_test.push_back(ball_test(res.steps[i].state_tube[j].attitude));
+    }
+    ix.step_test.push_back(ball_test(res.steps[i].attitude_box));
     if (ix.segment.size() < ix.ball.size()) ix.ball[ix.segment.size()] = static_cast<long>(i + 1);
   }
   if (ix.segment.size() + 1 != ix.times.size()) {
@@ -83,15 +98,21 @@ PointIndex index_points(const ReachResult& res) {
 }
 
 /// The sample at nominal point k against tube segments g = k − 1 (ending at t_k) and g = k
-/// (starting there), and their U_i.
+/// (starting there), and their U_i (computed once when both segments are of the same step).
 void check_tube_at(const ReachResult& res, const PointIndex& ix, std::size_t k, double t, const Mat3& Rk,
                    const Vec3& wk, SampleOutcome& out) {
+  std::size_t u_step = ix.step_test.size();
+  double u_excess = 0.0;
   for (const std::size_t g : {k - 1, k}) {
     if (g >= ix.segment.size()) continue;  // k − 1 wraps for k = 0
-    const ReachStep& st = res.steps[ix.segment[g].first];
+    const std::size_t i = ix.segment[g].first;
+    const ReachStep& st = res.steps[i];
     const TubeSegment& seg = st.state_tube[ix.segment[g].second];
-    const double ex = std::max({excess(seg.attitude, seg.omega, Rk, wk),
-                                excess(st.attitude_box, st.omega_box, Rk, wk),
+    if (i != u_step) {
+      u_excess = excess(ix.step_test[i], st.omega_box, Rk, wk);
+      u_step = i;
+    }
+    const double ex = std::max({excess(ix.segment_test[g], seg.omega, Rk, wk), u_excess,
                                 wk.norm() - seg.omega_norm_bound() * (1.0 + kRoundoff) - kRoundoff});
     if (!(ex <= 0.0) && out.tube_violation < 0.0) out.tube_violation = t;
     out.worst_excess = std::max(out.worst_excess, std::isfinite(ex) ? ex : 1e300);
@@ -117,7 +138,7 @@ void check_ball_at(const ReachResult& res, std::size_t i, double t, const Mat3& 
 SampleOutcome check_sample(const ClosedLoop& loop, const ReachResult& res, const PointIndex& ix,
                            const Mat3& R, const Vec3& w, double step, bool keep) {
   SampleOutcome out;
-  simulate(loop, R, w, ix.times, step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
+  simulate_stops(loop, 0.0, R, w, ix.times, step, [&](std::size_t k, const Mat3& Rk, const Vec3& wk) {
     if (keep) {
       out.traj.t.push_back(ix.times[k]);
       out.traj.R.push_back(Rk);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <type_traits>
 #include <vector>
@@ -219,6 +220,53 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
     }
   }
   EXPECT_GT(moving, 100);  // both branches of ξ were compared
+}
+
+// rates() with a GovernorMemo is evaluate()'s τ and ξ bit for bit whatever the memo holds: the
+// figures of this very state (the monitor before the step's first stage), of the same R_g with
+// another (R, ω) (a reference held over the stages), of another state, or nothing; figures() with
+// a memo is figures() (docs/performance.md, "Shared cone cosines").
+TEST(AttitudeGovernor, RatesWithAMemoAreEvaluatesTorqueAndReferenceRateBitForBit) {
+  const std::vector<ConeConstraint> cones = lean_check_cones();
+  const std::vector<GovernorParams> variants = lean_check_variants();
+  int hits = 0;
+  for (const GovernorParams& p : variants) {
+    const AttitudeGovernor gov(p, cones);
+    GovernorMemo memo;
+    for (int i = 0; i < 400; ++i) {
+      const Mat3 R = test::random_rotation();
+      const Mat3 R_g = i % 2 == 0 ? Mat3(R * lie::exp(test::random_vector_in_ball(0.5))) : test::random_rotation();
+      const Mat3 R_d = test::random_rotation();
+      const Vec3 w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
+      const TieBreak tie{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+      for (const bool flag : {true, false}) {
+        const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
+        const int kind = (i + (flag ? 0 : 1)) % 4;
+        if (kind == 0 || kind == 1) {  // this state, or R_g with another (R, ω)
+          const GovernorOutput seen = kind == 0 ? gov.figures(R, w, R_g, R_d, flag, tie, memo)
+                                                : gov.figures(test::random_rotation(), -w, R_g, R_d, flag, tie, memo);
+          if (kind == 0) {
+            const GovernorOutput plain = gov.figures(R, w, R_g, R_d, flag, tie);
+            EXPECT_EQ(std::memcmp(&seen.V, &plain.V, sizeof(double)), 0);
+            EXPECT_EQ(seen.gamma_g, plain.gamma_g);
+            EXPECT_EQ(seen.gamma, plain.gamma);
+            EXPECT_EQ(seen.tau_b, plain.tau_b);
+            ++hits;
+          }
+        } else if (kind == 2) {
+          (void)gov.figures(test::random_rotation(), w, test::random_rotation(), R_d, flag, tie, memo);
+        } else {
+          memo = GovernorMemo{};
+        }
+        const GovernorRates lean = gov.rates(R, w, R_g, R_d, flag, tie, memo);
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_EQ(lean.tau_b[k], full.tau_b[k]);
+          EXPECT_EQ(lean.xi_g[k], full.xi_g[k]);
+        }
+      }
+    }
+  }
+  EXPECT_GT(hits, 100);
 }
 
 // figures() is evaluate() without ρ_n and ξ: every other field bit for bit the same

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -22,6 +24,16 @@ void require(bool ok, const std::string& what) {
   if (!ok) {
     throw SetupError("governor: " + what);
   }
+}
+
+/// a and b hold the same bits (a memo's key: equal inputs give equal results).
+template <class M>
+bool same_bits(const M& a, const M& b) noexcept {
+  bool same = true;
+  for (int i = 0; i < M::SizeAtCompileTime; ++i) {
+    same = same && std::bit_cast<std::uint64_t>(a(i)) == std::bit_cast<std::uint64_t>(b(i));
+  }
+  return same;
 }
 
 }  // namespace
@@ -98,7 +110,7 @@ double AttitudeGovernor::gamma_g(const Mat3& R_g) const noexcept {
   return pointing_threshold(cones_.span(), R_g, params_.gains.kp);
 }
 
-double AttitudeGovernor::gamma_of(double gamma_g) const noexcept {
+inline double AttitudeGovernor::gamma_of(double gamma_g) const noexcept {
   const double nominal = std::min({gamma_d_, gamma_g, gamma_cap_});
   return params_.robust ? (1.0 - params_.robust->delta) * nominal : nominal;
 }
@@ -110,7 +122,7 @@ double AttitudeGovernor::level(const Mat3& R_ib, const Vec3& omega_b, const Mat3
   return strict_lyapunov(params_.J, R_ib, omega_b, R_g, params_.gains.kp, params_.robust->epsilon);
 }
 
-double AttitudeGovernor::decision_level(const Mat3& R_ib, const Vec3& omega_b,
+inline double AttitudeGovernor::decision_level(const Mat3& R_ib, const Vec3& omega_b,
                                         const Mat3& R_g) const noexcept {
   const double W = level(R_ib, omega_b, R_g);
   return params_.robust ? W + params_.robust->measurement_margin : W;
@@ -132,8 +144,9 @@ bool AttitudeGovernor::trigger_condition(const Mat3& R_ib, const Vec3& omega_b,
   return pet_trigger(gamma(R_g), decision_level(R_ib, omega_b, R_g), params_.c_gamma);
 }
 
-GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
-                                         const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
+// flatten: as rates() below (docs/performance.md, "Shared cone cosines").
+[[gnu::flatten]] inline GovernorOutput AttitudeGovernor::figures_into(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
+                                              bool flag, const TieBreak& tie, GovernorMemo* memo) const noexcept {
   GovernorOutput out;
   out.R_g = params_.mode == GovernorMode::none ? R_d : R_g;
   // RᵀR_g once for τ [PET-ERG eq. (3)] and V, each formed from it as pd_torque and pd_lyapunov do.
@@ -142,7 +155,17 @@ GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, 
   out.V = 0.5 * omega_b.dot(params_.J * omega_b) + params_.gains.kp * lie::phi(R_e);
   out.W = params_.robust ? level(R_ib, omega_b, out.R_g) : out.V;
   out.gamma_d = gamma_d_;
-  out.gamma_g = gamma_g(out.R_g);
+  if (memo != nullptr) {
+    remember_reference(out.R_g, *memo);
+    out.gamma_g = memo->gamma_g;
+    memo->has_state = true;
+    memo->R_ib = R_ib;
+    memo->omega_b = omega_b;
+    memo->tau_b = out.tau_b;
+    memo->V = out.V;
+  } else {
+    out.gamma_g = gamma_g(out.R_g);
+  }
   out.gamma = gamma_of(out.gamma_g);
   out.trigger = flag;
   switch (params_.mode) {
@@ -165,6 +188,26 @@ GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, 
   return out;
 }
 
+GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                         const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
+  return figures_into(R_ib, omega_b, R_g, R_d, flag, tie, nullptr);
+}
+
+GovernorOutput AttitudeGovernor::figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                         const Mat3& R_d, bool flag, const TieBreak& tie,
+                                         GovernorMemo& memo) const noexcept {
+  return figures_into(R_ib, omega_b, R_g, R_d, flag, tie, &memo);
+}
+
+inline void AttitudeGovernor::remember_reference(const Mat3& R_g, GovernorMemo& memo) const noexcept {
+  if (memo.has_reference && same_bits(memo.R_g, R_g)) return;
+  memo.has_reference = true;
+  memo.has_state = false;
+  memo.R_g = R_g;
+  memo.gamma_g = pointing_threshold(cones_.span(), R_g, params_.gains.kp,
+                                    std::span<double>(memo.cosines.data(), static_cast<std::size_t>(cones_.size())));
+}
+
 GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                           const Mat3& R_d, bool flag, const TieBreak& tie) const noexcept {
   GovernorOutput out = figures(R_ib, omega_b, R_g, R_d, flag, tie);
@@ -185,26 +228,55 @@ GovernorOutput AttitudeGovernor::evaluate(const Mat3& R_ib, const Vec3& omega_b,
   return out;
 }
 
-Vec3 AttitudeGovernor::held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept {
+inline Vec3 AttitudeGovernor::held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept {
   return governor::tie_break_field(tie, cones_.span(), R_g, R_d, navigation_field(R_g, R_d));
+}
+
+inline Vec3 AttitudeGovernor::held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie,
+                                  std::span<const double> cosines) const noexcept {
+  const Vec3 rho = governor::navigation_field(cones_.span(), R_g, R_d, std::min(params_.epsilon, kTieBreakFloorCap),
+                                              cosines);
+  if (!tie.active) return rho;  // tie_break_field returns ρ_n itself without a held detour
+  return governor::tie_break_field(tie, cones_.span(), R_g, R_d, rho);
 }
 
 GovernorRates AttitudeGovernor::rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
                                       bool flag, const TieBreak& tie) const noexcept {
+  GovernorMemo memo;  // empty: every figure computed here
+  return rates(R_ib, omega_b, R_g, R_d, flag, tie, memo);
+}
+
+// flatten: the helpers, ρ_n's terms and Eigen's 3×3 products inline into the integrator's field
+// (docs/performance.md, "Shared cone cosines"); inlining leaves every operation and its order as is.
+[[gnu::flatten]] GovernorRates AttitudeGovernor::rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
+                                      bool flag, const TieBreak& tie, GovernorMemo& memo) const noexcept {
   GovernorRates out;
   const bool none = params_.mode == GovernorMode::none || params_.mode == GovernorMode::planned;
   const Mat3& R_ref = none ? R_d : R_g;
-  // RᵀR_g once for τ [PET-ERG eq. (3)] and V, each formed from it as pd_torque and pd_lyapunov do.
-  const Mat3 R_e = R_ib.transpose() * R_ref;
-  out.tau_b = params_.gains.kp * lie::vee(lie::sk(R_e)) - params_.gains.kd * omega_b;
+  // τ and V of figures() at this very state (the monitor's, before the step's first stage).
+  const bool known = memo.has_state && same_bits(memo.R_g, R_ref) && same_bits(memo.R_ib, R_ib) &&
+                     same_bits(memo.omega_b, omega_b);
+  Mat3 R_e;
+  if (known) {
+    out.tau_b = memo.tau_b;
+  } else {
+    // RᵀR_g once for τ [PET-ERG eq. (3)] and V, each formed from it as pd_torque and pd_lyapunov do.
+    R_e = R_ib.transpose() * R_ref;
+    out.tau_b = params_.gains.kp * lie::vee(lie::sk(R_e)) - params_.gains.kd * omega_b;
+  }
   // ξ = 0 without a governor and, in mode pet, while the flag of [PET-ERG eq. (5)] is held down.
   if (none || (params_.mode == GovernorMode::pet && !flag)) return out;
-  const double gamma = gamma_of(gamma_g(R_ref));
+  const double V_known = memo.V;  // read before remember_reference may move the memo to R_ref
+  remember_reference(R_ref, memo);
+  const double gamma = gamma_of(memo.gamma_g);
   const double decided = params_.robust ? decision_level(R_ib, omega_b, R_ref)
+                         : known        ? V_known
                                         : 0.5 * omega_b.dot(params_.J * omega_b) + params_.gains.kp * lie::phi(R_e);
   // [PET-ERG eqs. (4), (6)] give ξ = 0 where κ max{Γ − V, 0} is not positive: no ρ_n needed there.
   if (dynamic_safety_margin(params_.kappa, gamma, decided) <= 0.0) return out;
-  out.xi_g = erg_reference_rate(params_.kappa, gamma, decided, held_field(R_ref, R_d, tie), params_.epsilon);
+  // The cones' cosines of Γ_g serve ρ_n's repulsive terms at the same R_g.
+  const std::span<const double> cosines(memo.cosines.data(), static_cast<std::size_t>(cones_.size()));
+  out.xi_g = erg_reference_rate(params_.kappa, gamma, decided, held_field(R_ref, R_d, tie, cosines), params_.epsilon);
   return out;
 }
 

@@ -110,6 +110,23 @@ struct GovernorRates {
   Vec3 xi_g{Vec3::Zero()};   ///< body rate of R_g, [PET-ERG eq. (6)] in mode pet, (4) in mode continuous [rad/s]
 };
 
+/// What figures() or rates() computed at one state, for a later call at a bit-identical state
+/// (docs/performance.md, "Shared cone cosines"): Γ_g and the cones' cosines a_cᵀR_g a_b at the
+/// reference R_g [PET-ERG Sec. III-B], and τ [PET-ERG eq. (3)] and V [PET-ERG Sec. III-A] at
+/// (R, ω, R_g). A caller keeps one per loop; a call reads an entry only where its inputs equal the
+/// stored ones bit for bit, so its results are those it would compute. Allocation-free.
+struct GovernorMemo {
+  bool has_reference{false};  ///< R_g, gamma_g and cosines are set
+  bool has_state{false};      ///< R_ib, omega_b, tau_b and V are set (for R_g)
+  Mat3 R_g{Mat3::Identity()};
+  double gamma_g{0.0};
+  std::array<double, kMaxCones> cosines{};
+  Mat3 R_ib{Mat3::Identity()};
+  Vec3 omega_b{Vec3::Zero()};
+  Vec3 tau_b{Vec3::Zero()};
+  double V{0.0};
+};
+
 /// PD law [PET-ERG eq. (3)] + [PET-ERG eqs. (5)-(6)] / ERG [PET-ERG eq. (4)], as one flight-loop object.
 class AttitudeGovernor {
  public:
@@ -151,11 +168,22 @@ class AttitudeGovernor {
   /// item 2)") [PET-ERG eqs. (3), (5), (2b)].
   [[nodiscard]] GovernorOutput figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
                                        const Mat3& R_d, bool flag, const TieBreak& tie = {}) const noexcept;
+  /// figures() that also stores Γ_g, the cones' cosines, τ and V of this state in `memo` for a
+  /// later rates() at the same state (the monitor and the next step's first stage);
+  /// [PET-ERG eqs. (3), (5), (2b)], the output bit for bit figures()'s.
+  [[nodiscard]] GovernorOutput figures(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                       const Mat3& R_d, bool flag, const TieBreak& tie,
+                                       GovernorMemo& memo) const noexcept;
   /// τ and ξ of evaluate() alone, bit for bit the same, for the integrator's stages
   /// [PET-ERG eqs. (3)-(6)]: no margins of [PET-ERG eq. (2b)], Γ_g once, and V, Γ and ρ_n only
   /// where ξ needs them (not with the flag of [PET-ERG eq. (5)] down, ρ_n not when Γ ≤ V).
   [[nodiscard]] GovernorRates rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
                                     bool flag, const TieBreak& tie = {}) const noexcept;
+  /// rates() reading Γ_g, the cosines, τ and V from `memo` where its inputs are the stored ones bit
+  /// for bit, and storing Γ_g and the cosines of a new R_g there: the same τ and ξ of
+  /// [PET-ERG eqs. (3)-(6)] (docs/performance.md, "Shared cone cosines").
+  [[nodiscard]] GovernorRates rates(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g, const Mat3& R_d,
+                                    bool flag, const TieBreak& tie, GovernorMemo& memo) const noexcept;
   /// The saddle tie-break at a sampling instant for R_g and R_d (update_tie_break with the floor
   /// min(ε, kTieBreakFloorCap) on ‖ρ_a‖; docs/pet-erg.md, section 4, "Saddles: the tie-break"); the state of the flight
   /// loop is not changed.
@@ -202,18 +230,30 @@ class AttitudeGovernor {
   [[nodiscard]] double gamma_cap() const noexcept { return gamma_cap_; }
 
  private:
+  // The helpers below are `inline` (defined in attitude_governor.cpp, used only there): the
+  // library is compiled with -fPIC, where GCC does not inline a function that may be interposed,
+  // and rates() and figures() inline them (docs/performance.md, "Shared cone cosines").
   /// Halvings of a reference move tried before it is dropped (bounded_step; 2⁻³⁰ of a step).
   static constexpr int kMaxMoveHalvings = 30;
   /// The bounded move of R_g over dt (docs/pet-erg.md, "Discrete reference update").
   /// `scale` ∈ (0, 1] shortens the allowed length; `applied` receives the move taken (0 if none).
   [[nodiscard]] Mat3 bounded_move(const Mat3& R_ib, const Vec3& omega_b, double dt, double scale,
                                   Vec3& applied) const noexcept;
+  /// figures() and, when `memo` is set, its Γ_g, cosines, τ and V stored there [PET-ERG eqs. (3), (5), (2b)].
+  [[nodiscard]] inline GovernorOutput figures_into(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g,
+                                            const Mat3& R_d, bool flag, const TieBreak& tie,
+                                            GovernorMemo* memo) const noexcept;
   /// Γ from Γ_g(R_g) already computed: gamma(R_g) without computing Γ_g again [PET-ERG Sec. III-B.1].
-  [[nodiscard]] double gamma_of(double gamma_g) const noexcept;
+  [[nodiscard]] inline double gamma_of(double gamma_g) const noexcept;
   /// ρ_n with the held tie-break's detour (docs/pet-erg.md, section 4) [PET-ERG Sec. III-B.2].
-  [[nodiscard]] Vec3 held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept;
+  [[nodiscard]] inline Vec3 held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie) const noexcept;
+  /// held_field with the cones' cosines a_cᵀR_g a_b already computed [PET-ERG Sec. III-B.2].
+  [[nodiscard]] inline Vec3 held_field(const Mat3& R_g, const Mat3& R_d, const TieBreak& tie,
+                                std::span<const double> cosines) const noexcept;
+  /// Γ_g(R_g) and the cones' cosines into `memo` unless it holds them for R_g [PET-ERG Sec. III-B.1].
+  inline void remember_reference(const Mat3& R_g, GovernorMemo& memo) const noexcept;
   /// The level the decisions use: V, or W + e_W with robust margins (section 13).
-  [[nodiscard]] double decision_level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
+  [[nodiscard]] inline double decision_level(const Mat3& R_ib, const Vec3& omega_b, const Mat3& R_g) const noexcept;
   /// May R_g be moved to `candidate` for the measured (R, ω)? V ≤ Γ there; with robust margins
   /// W + e_W ≤ Γ_W and Γ_W > Γ_min (docs/pet-erg.md, section 13).
   [[nodiscard]] bool admissible_move(const Mat3& R_ib, const Vec3& omega_b, const Mat3& candidate) const noexcept;

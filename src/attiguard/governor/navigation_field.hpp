@@ -83,13 +83,19 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   return repulsive_potential_of_cosine(cone, cone_cosine(cone, R_g));
 }
 
-/// Repulsive field of one cone ρ_r = −grad P_r = −(dP_r/dc) g_c [PET-ERG Sec. III-B.2].
-[[nodiscard]] inline Vec3 repulsive_field(const ConeConstraint& cone, const Mat3& R_g) noexcept {
-  const double c = cone_cosine(cone, R_g);
+/// Repulsive field of one cone from its cosine c = a_cᵀR_g a_b already computed (cone_cosine):
+/// ρ_r = −(dP_r/dc) g_c [PET-ERG Sec. III-B.2] (docs/performance.md, "Shared cone cosines").
+[[nodiscard]] inline Vec3 repulsive_field_of_cosine(const ConeConstraint& cone, double c,
+                                                    const Mat3& R_g) noexcept {
   if (c >= cone.zeta) {
     return Vec3::Zero();
   }
   return -repulsive_potential_slope(cone, c) * constraint_gradient(cone, R_g);
+}
+
+/// Repulsive field of one cone ρ_r = −grad P_r = −(dP_r/dc) g_c [PET-ERG Sec. III-B.2].
+[[nodiscard]] inline Vec3 repulsive_field(const ConeConstraint& cone, const Mat3& R_g) noexcept {
+  return repulsive_field_of_cosine(cone, cone_cosine(cone, R_g), R_g);
 }
 
 /// Total potential P = P_a + Σ_i P_r,i (PET-ERG paper Sec. III-B.2; sum over cones: docs/pet-erg.md, "Beyond the paper").
@@ -110,6 +116,19 @@ inline constexpr double kRepulsiveFloor = 1e-12;
   Vec3 rho = governed_attractive_field(R_g, R_d, attraction_floor);
   for (const ConeConstraint& cone : cones) {
     rho += repulsive_field(cone, R_g);
+  }
+  return rho;
+}
+
+/// navigation_field with each cone's cosine a_cᵀR_g a_b already computed (`cosines`, one per
+/// cone, e.g. by the pointing_threshold overload that writes them): bit for bit the same field
+/// [PET-ERG Sec. III-B.2] (docs/performance.md, "Shared cone cosines").
+[[nodiscard]] inline Vec3 navigation_field(std::span<const ConeConstraint> cones, const Mat3& R_g,
+                                           const Mat3& R_d, double attraction_floor,
+                                           std::span<const double> cosines) noexcept {
+  Vec3 rho = governed_attractive_field(R_g, R_d, attraction_floor);
+  for (std::size_t i = 0; i < cones.size(); ++i) {
+    rho += repulsive_field_of_cosine(cones[i], cosines[i], R_g);
   }
   return rho;
 }

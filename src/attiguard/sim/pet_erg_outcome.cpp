@@ -12,6 +12,11 @@ void ReferenceMotion::observe(double t, const lie::Mat3& R_g) noexcept {
     last_ = R_g;
     return;
   }
+  // R_g held (the same bits): log(RᵀR) is rounding, below kReferenceMoveFloor, not a move.
+  if (R_g == last_) {
+    last_ = R_g;  // the same values; keeps the signs of zeros as the path below would
+    return;
+  }
   const lie::Vec3 move = lie::log(last_.transpose() * R_g);
   last_ = R_g;
   const double size = move.norm();

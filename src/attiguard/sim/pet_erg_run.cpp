@@ -42,9 +42,12 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   bool flag = sc.params.mode == GovernorMode::continuous;
   // The saddle tie-break, sampled with the flag and held with it (docs/pet-erg.md, section 4).
   governor::TieBreak tie;
+  // Γ_g, the cone cosines, τ and V of the monitor's state for the next step's first stage, and Γ_g
+  // of a reference held over the stages (docs/performance.md, "Shared cone cosines").
+  governor::GovernorMemo memo;
 
   auto field = [&](double t, const PetErgState& s) -> PetErgState::Tangent {
-    const governor::GovernorRates out = gov.rates(s.R[0], s.x, s.R[1], sc.desired.at(t), flag, tie);
+    const governor::GovernorRates out = gov.rates(s.R[0], s.x, s.R[1], sc.desired.at(t), flag, tie, memo);
     PetErgState::Tangent d;
     d.segment<3>(0) = s.x;
     d.segment<3>(3) = out.xi_g;
@@ -55,7 +58,7 @@ PetErgResult simulate_continuous_time(const PetErgScenario& sc, const PetErgRowO
   auto monitor = [&](double t, const PetErgState& s, bool row) -> GovernorOutput {
     const Mat3 R_d = sc.desired.at(t);
     const GovernorOutput out = row ? gov.evaluate(s.R[0], s.x, s.R[1], R_d, flag, tie)
-                                   : gov.figures(s.R[0], s.x, s.R[1], R_d, flag, tie);
+                                   : gov.figures(s.R[0], s.x, s.R[1], R_d, flag, tie, memo);
     record(sc, r, t, R_d, s.R[0], out);
     return out;
   };

@@ -194,6 +194,23 @@ std::vector<GovernorParams> lean_check_variants() {
           paper_params(GovernorMode::none), robust};
 }
 
+// State i of the lean checks of rates(): R_g near R for even i, ω large every third, the
+// tie-break held or not.
+struct LeanCheckState {
+  Mat3 R, R_g, R_d;
+  Vec3 w;
+  TieBreak tie;
+};
+LeanCheckState lean_check_state(int i) {
+  LeanCheckState st;
+  st.R = test::random_rotation();
+  st.R_g = i % 2 == 0 ? Mat3(st.R * lie::exp(test::random_vector_in_ball(0.5))) : test::random_rotation();
+  st.R_d = test::random_rotation();
+  st.w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
+  st.tie = TieBreak{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+  return st;
+}
+
 // rates() is evaluate()'s τ and ξ bit for bit, in every mode, with the flag up and down, a held
 // tie-break, robust margins, states inside and outside {V ≤ Γ}.
 TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
@@ -203,11 +220,12 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
   for (const GovernorParams& p : variants) {
     const AttitudeGovernor gov(p, cones);
     for (int i = 0; i < 400; ++i) {
-      const Mat3 R = test::random_rotation();
-      const Mat3 R_g = i % 2 == 0 ? Mat3(R * lie::exp(test::random_vector_in_ball(0.5))) : test::random_rotation();
-      const Mat3 R_d = test::random_rotation();
-      const Vec3 w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
-      const TieBreak tie{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+      const LeanCheckState st = lean_check_state(i);
+      const Mat3& R = st.R;
+      const Mat3& R_g = st.R_g;
+      const Mat3& R_d = st.R_d;
+      const Vec3& w = st.w;
+      const TieBreak& tie = st.tie;
       for (const bool flag : {true, false}) {
         const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
         const GovernorRates lean = gov.rates(R, w, R_g, R_d, flag, tie);
@@ -234,11 +252,12 @@ TEST(AttitudeGovernor, RatesWithAMemoAreEvaluatesTorqueAndReferenceRateBitForBit
     const AttitudeGovernor gov(p, cones);
     GovernorMemo memo;
     for (int i = 0; i < 400; ++i) {
-      const Mat3 R = test::random_rotation();
-      const Mat3 R_g = i % 2 == 0 ? Mat3(R * lie::exp(test::random_vector_in_ball(0.5))) : test::random_rotation();
-      const Mat3 R_d = test::random_rotation();
-      const Vec3 w = test::random_vector_in_ball(i % 3 == 0 ? 2.0 : 0.2);
-      const TieBreak tie{i % 4 == 1, i % 2, i % 8 < 4 ? 1.0 : -1.0};
+      const LeanCheckState st = lean_check_state(i);
+      const Mat3& R = st.R;
+      const Mat3& R_g = st.R_g;
+      const Mat3& R_d = st.R_d;
+      const Vec3& w = st.w;
+      const TieBreak& tie = st.tie;
       for (const bool flag : {true, false}) {
         const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
         const int kind = (i + (flag ? 0 : 1)) % 4;

@@ -31,7 +31,7 @@ if [[ "$mode" == test ]]; then
   packages+=(
     ccache
     libgtest-dev libbenchmark-dev
-    python3-pytest python3-venv python3-setuptools python3-wheel python3-mypy
+    python3-pytest python3-pytest-xdist python3-venv python3-setuptools python3-wheel python3-mypy
     openmpi-bin libopenmpi-dev clang libclang-rt-14-dev
     python3-h5py               # the tests read the retained HDF5 files
     python3-scipy              # python/tests/test_reach_truth.py (scripts/reach_truth.py)

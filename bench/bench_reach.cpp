@@ -4,10 +4,17 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <string>
+
+#include "attiguard/reach/auto_split.hpp"
 #include "attiguard/reach/conreach.hpp"
 #include "attiguard/reach/contraction_sdp.hpp"
 #include "attiguard/reach/dense_sdp.hpp"
+#include "attiguard/reach/partition.hpp"
 #include "attiguard/reach/soundness.hpp"
+#include "attiguard/scenario/document.hpp"
+#include "attiguard/scenario/read_reach.hpp"
 
 namespace ar = attiguard::reach;
 
@@ -138,6 +145,46 @@ static void BM_PaperSdpPerSolve(benchmark::State& state) {
           : 0.0;
 }
 BENCHMARK(BM_PaperSdpPerSolve)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// The SDP counts of docs/performance.md and docs/reach.md ("Dense SDP solver"), reproducible: one
+// analysis (the cells, the splitting rounds; no soundness check, one thread) of a reach example
+// as `attiguard reach` runs it, with the counters of dense_sdp_counts() over it: solves the dense
+// solver accepted, called infeasible and handed to CSDP, CSDP's solves, the mean dense
+// iterations, and the thread CPU time per solve. /0 conreach_paper, /1 conreach_pd,
+// /2 conreach_slow_pd, /3 conreach_hold_partitioned.
+static void BM_ExampleSdpCounts(benchmark::State& state) {
+  static const std::array<const char*, 4> kExamples{"conreach_paper", "conreach_pd",
+                                                    "conreach_slow_pd",
+                                                    "conreach_hold_partitioned"};
+  const std::string name = kExamples.at(static_cast<std::size_t>(state.range(0)));
+  const ar::ReachScenario sc = attiguard::scenario::parse_reach(attiguard::scenario::load_document(
+      std::string(ATTIGUARD_SOURCE_DIR) + "/examples/" + name + ".toml"));
+  const ar::DenseSdpCounts before = ar::dense_sdp_counts();
+  for (auto _ : state) {
+    const ar::SplitOutcome out = ar::run_with_splitting(
+        *sc.loop, ar::partition_initial_set(sc.initial, sc.attitude_cells, sc.omega_cells),
+        sc.settings, sc.safety, sc.split, 1);
+    benchmark::DoNotOptimize(out.results.size());
+  }
+  const ar::DenseSdpCounts after = ar::dense_sdp_counts();
+  const double runs = static_cast<double>(state.iterations());
+  const auto per_run = [&](long a, long b) { return static_cast<double>(a - b) / runs; };
+  state.SetLabel(name);
+  state.counters["dense_solved"] = per_run(after.dense, before.dense);
+  state.counters["dense_infeasible"] = per_run(after.infeasible, before.infeasible);
+  state.counters["csdp_fallbacks"] = per_run(after.fallback, before.fallback);
+  state.counters["csdp_solves"] = per_run(after.csdp, before.csdp);
+  const double dense = static_cast<double>(after.dense - before.dense);
+  state.counters["dense_iterations"] =
+      dense > 0 ? static_cast<double>(after.dense_iterations - before.dense_iterations) / dense : 0.0;
+  const double solves = static_cast<double>(after.dense + after.infeasible + after.fallback -
+                                            before.dense - before.infeasible - before.fallback);
+  state.counters["us_per_sdp"] =
+      solves > 0 ? 1e6 * (after.dense_seconds + after.csdp_seconds - before.dense_seconds -
+                          before.csdp_seconds) / solves
+                 : 0.0;
+}
+BENCHMARK(BM_ExampleSdpCounts)->DenseRange(0, 3)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 static void BM_SoundnessPaper10k(benchmark::State& state) {
   const ar::ReachResult res = ar::run_conreach(paper_loop(), kPaperSet, {});

@@ -220,12 +220,7 @@ TEST(AttitudeGovernor, RatesAreEvaluatesTorqueAndReferenceRateBitForBit) {
   for (const GovernorParams& p : variants) {
     const AttitudeGovernor gov(p, cones);
     for (int i = 0; i < 400; ++i) {
-      const LeanCheckState st = lean_check_state(i);
-      const Mat3& R = st.R;
-      const Mat3& R_g = st.R_g;
-      const Mat3& R_d = st.R_d;
-      const Vec3& w = st.w;
-      const TieBreak& tie = st.tie;
+      const auto [R, R_g, R_d, w, tie] = lean_check_state(i);
       for (const bool flag : {true, false}) {
         const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
         const GovernorRates lean = gov.rates(R, w, R_g, R_d, flag, tie);
@@ -252,12 +247,7 @@ TEST(AttitudeGovernor, RatesWithAMemoAreEvaluatesTorqueAndReferenceRateBitForBit
     const AttitudeGovernor gov(p, cones);
     GovernorMemo memo;
     for (int i = 0; i < 400; ++i) {
-      const LeanCheckState st = lean_check_state(i);
-      const Mat3& R = st.R;
-      const Mat3& R_g = st.R_g;
-      const Mat3& R_d = st.R_d;
-      const Vec3& w = st.w;
-      const TieBreak& tie = st.tie;
+      const auto [R, R_g, R_d, w, tie] = lean_check_state(i);
       for (const bool flag : {true, false}) {
         const GovernorOutput full = gov.evaluate(R, w, R_g, R_d, flag, tie);
         const int kind = (i + (flag ? 0 : 1)) % 4;
